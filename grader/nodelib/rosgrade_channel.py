@@ -1,0 +1,138 @@
+"""Frame codec for the data-only channel between the grader and a node process (stdlib only: it runs on both sides).
+
+A frame is ``u32 length (little-endian) | u8 kind | payload``; ``length`` counts the kind byte and the payload.
+Payloads are JSON objects or raw ROS 1 message bytes, never anything that is executed or unpickled.
+"""
+from __future__ import annotations
+
+import json
+import os
+import struct
+
+PROTOCOL = 1
+
+CLOCK_PERIOD_NS = 10_000_000
+CALL_QUANTUM_NS = 1_000_000
+
+MAX_FRAME_BYTES = 8 * 1024 * 1024
+MAX_JSON_BYTES = 256 * 1024
+
+# node -> grader
+HELLO = 1
+INIT = 2
+ADVERTISE = 3
+SUBSCRIBE = 4
+UNREGISTER = 5
+PUBLISH = 6
+LOG = 7
+OUTPUT = 8
+EXCEPTION = 9
+WAIT = 10
+# grader -> node
+START = 32
+ADVANCE = 33
+DELIVER = 34
+SHUTDOWN = 35
+RESUME = 36
+
+KIND_NAMES = {
+    HELLO: "HELLO", INIT: "INIT", ADVERTISE: "ADVERTISE", SUBSCRIBE: "SUBSCRIBE", UNREGISTER: "UNREGISTER",
+    PUBLISH: "PUBLISH", LOG: "LOG", OUTPUT: "OUTPUT", EXCEPTION: "EXCEPTION", WAIT: "WAIT",
+    START: "START", ADVANCE: "ADVANCE", DELIVER: "DELIVER", SHUTDOWN: "SHUTDOWN", RESUME: "RESUME",
+}
+NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT})
+GRADER_KINDS = frozenset({START, ADVANCE, DELIVER, SHUTDOWN, RESUME})
+JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT,
+                        START, ADVANCE, SHUTDOWN})
+
+_HEADER = struct.Struct("<IB")
+_ID = struct.Struct("<I")
+_STREAM = struct.Struct("<B")
+
+
+class ChannelError(Exception):
+    """The other side broke the protocol or closed the channel."""
+
+
+def encode(kind: int, payload: bytes = b"") -> bytes:
+    """One frame as bytes."""
+    return _HEADER.pack(len(payload) + 1, kind) + payload
+
+
+def encode_json(kind: int, obj: dict) -> bytes:
+    return encode(kind, json.dumps(obj, separators=(",", ":")).encode())
+
+
+def encode_id_bytes(kind: int, ident: int, data: bytes) -> bytes:
+    """A PUBLISH or DELIVER frame: a topic handle and a serialized message."""
+    return encode(kind, _ID.pack(ident) + data)
+
+
+def encode_output(stream: int, text: bytes) -> bytes:
+    return encode(OUTPUT, _STREAM.pack(stream) + text)
+
+
+def split_id_bytes(payload: bytes) -> tuple[int, bytes]:
+    if len(payload) < 4:
+        raise ChannelError("message frame shorter than its 4-byte topic handle")
+    return _ID.unpack_from(payload)[0], payload[4:]
+
+
+def split_output(payload: bytes) -> tuple[int, bytes]:
+    if not payload or payload[0] not in (1, 2):
+        raise ChannelError("output frame without a valid stream number")
+    return payload[0], payload[1:]
+
+
+def decode_json(payload: bytes) -> dict:
+    """Parse a JSON payload strictly: size-capped, must be an object."""
+    if len(payload) > MAX_JSON_BYTES:
+        raise ChannelError(f"JSON frame of {len(payload)} bytes exceeds {MAX_JSON_BYTES}")
+    try:
+        obj = json.loads(payload.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError) as exc:
+        raise ChannelError(f"frame is not valid JSON: {exc}") from None
+    if not isinstance(obj, dict):
+        raise ChannelError("JSON frame is not an object")
+    return obj
+
+
+class FrameReader:
+    """Reads whole frames from a file descriptor, with a size cap; raises ChannelError on EOF or garbage."""
+
+    def __init__(self, fd: int, allowed: frozenset[int], max_frame: int = MAX_FRAME_BYTES) -> None:
+        self.fd = fd
+        self.allowed = allowed
+        self.max_frame = max_frame
+        self._buf = bytearray()
+
+    def _fill(self, need: int) -> None:
+        while len(self._buf) < need:
+            chunk = os.read(self.fd, max(65536, need - len(self._buf)))
+            if not chunk:
+                raise ChannelError("channel closed")
+            self._buf += chunk
+
+    def buffered(self) -> bool:
+        """True when a complete frame header is already buffered (no read needed to start the next frame)."""
+        return len(self._buf) >= _HEADER.size
+
+    def read(self) -> tuple[int, bytes]:
+        self._fill(_HEADER.size)
+        length, kind = _HEADER.unpack_from(self._buf)
+        if length < 1 or length > self.max_frame:
+            raise ChannelError(f"frame length {length} outside 1..{self.max_frame}")
+        if kind not in self.allowed:
+            raise ChannelError(f"unexpected frame kind {kind}")
+        self._fill(4 + length)
+        payload = bytes(self._buf[_HEADER.size:4 + length])
+        del self._buf[:4 + length]
+        return kind, payload
+
+
+def write_all(fd: int, data: bytes) -> None:
+    """Write every byte (pipes may accept a partial write)."""
+    view = memoryview(data)
+    while view:
+        n = os.write(fd, view)
+        view = view[n:]
