@@ -100,14 +100,20 @@ def decode_json(payload: bytes) -> dict:
 class FrameReader:
     """Reads whole frames from a file descriptor, with a size cap; raises ChannelError on EOF or garbage."""
 
-    def __init__(self, fd: int, allowed: frozenset[int], max_frame: int = MAX_FRAME_BYTES) -> None:
+    def __init__(self, fd: int, allowed: frozenset[int], max_frame: int = MAX_FRAME_BYTES,
+                 before_read=None) -> None:
         self.fd = fd
         self.allowed = allowed
         self.max_frame = max_frame
+        # The grader passes a callable that waits (with a wall-clock deadline) until the fd is readable,
+        # so a node that stops mid-frame cannot block it forever.
+        self.before_read = before_read
         self._buf = bytearray()
 
     def _fill(self, need: int) -> None:
         while len(self._buf) < need:
+            if self.before_read is not None:
+                self.before_read()
             chunk = os.read(self.fd, max(65536, need - len(self._buf)))
             if not chunk:
                 raise ChannelError("channel closed")

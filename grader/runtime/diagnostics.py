@@ -1,0 +1,69 @@
+"""Plain-language findings about a run that a student can act on: topics, types, init_node, exceptions."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from grader.runtime.session import Session
+
+_CONNECT_MS = 50
+
+
+def _count(n: int, what: str) -> str:
+    return f"{n} {what}{'' if n == 1 else 's'}"
+
+
+def diagnose(session: Session) -> list[str]:
+    """Findings for every node of a finished session, most useful first."""
+    world = session.world
+    command_topics = tuple(world.command_topics)
+    world_topics = {world.robot.odometry.topic: "nav_msgs/Odometry", "/tf": "tf2_msgs/TFMessage"}
+    robot_received = sum(session.received.values())
+    notes: list[str] = []
+    for node in session.nodes:
+        state = node.link.state
+        label = node.outcome.script
+        if state.name is None:
+            notes.append(f"{label} never called rospy.init_node(): a ROS node must call it before it can publish, "
+                         "subscribe or read the time.")
+        for pub in state.publishers.values():
+            notes.append(f"{label} published {_count(pub.count, 'message')} on {pub.topic} ({pub.type}).")
+            if pub.topic in command_topics and pub.type != "geometry_msgs/Twist":
+                notes.append(f"{pub.topic} carries geometry_msgs/Twist, but {label} published {pub.type} there: "
+                             "the robot ignores it.")
+            elif (pub.type == "geometry_msgs/Twist" and pub.topic not in command_topics and pub.count
+                  and robot_received == 0):
+                notes.append(f"Your node published {_count(pub.count, 'message')} on {pub.topic}; this robot "
+                             f"listens on {' or '.join(command_topics)}.")
+            if pub.dropped_before_connect:
+                notes.append(
+                    f"{_count(pub.dropped_before_connect, 'message')} on {pub.topic} went out in the first "
+                    f"{_CONNECT_MS} ms after the publisher was created, before the robot had connected, and were "
+                    "lost (as on a real ROS system). Wait briefly after creating a publisher, or publish in a loop.")
+        for sub in state.subscribers.values():
+            expected = world_topics.get(sub.topic)
+            if expected is not None and expected != sub.type:
+                notes.append(f"{label} subscribed to {sub.topic} as {sub.type}, but it carries {expected}: "
+                             "no messages can arrive.")
+            elif expected is None and not any(sub.topic == p.topic for n in session.nodes
+                                               for p in n.link.state.publishers.values()):
+                available = ", ".join(sorted(world_topics))
+                notes.append(f"{label} subscribed to {sub.topic}, which nothing publishes here (the robot publishes "
+                             f"{available}).")
+            else:
+                notes.append(f"{label} received {_count(sub.count, 'message')} on {sub.topic} ({sub.type}).")
+        if state.exception:
+            exc = state.exception
+            where = ""
+            if exc.get("frames"):
+                last = exc["frames"][-1]
+                where = f" at {last.get('file', '?')} line {last.get('line', '?')}"
+                if last.get("text"):
+                    where += f" (`{last['text']}`)"
+            notes.append(f"{label} stopped with an uncaught {exc.get('type')}{where}: {exc.get('message')}")
+        if state.output_truncated:
+            notes.append(f"{label} printed more than the output limit; the rest was discarded.")
+        if node.outcome.status != "exited":
+            notes.append(f"{label}: {node.outcome.message}.")
+        notes.extend(node.outcome.findings)
+    return notes

@@ -1,0 +1,353 @@
+"""The lockstep loop: advance the world only while every node waits, deliver what is due, record everything.
+
+A node runs only between the grader's RESUME and its own WAIT, and the world moves only while all nodes wait,
+so the recording depends on nothing but the node's code and the scenario: the machine's load cannot change it.
+"""
+from __future__ import annotations
+
+import json
+import signal
+import tempfile
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import mujoco
+
+from grader import __version__
+from grader.nodelib import rosgrade_channel as ch
+from grader.recording import (MessageCatalog, Recorder, decode_twist, ground_truth_bytes, log_bytes,
+                              odometry_bytes, string_bytes, tf_bytes, twist_bytes)
+from grader.runtime.diagnostics import diagnose
+from grader.runtime.node_link import (Endpoint, LogLine, NodeExited, NodeLink, NodeSilent, OutputLine,
+                                      ProtocolViolation, Publication)
+from grader.runtime.process import NodeProcess, ProcessError
+from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
+from sim import CommandSample, GroundTruthSample, OdometrySample, TransformSample, World
+
+# Real rospy connects a new publisher or subscriber to its peers 49-91 ms after it is created (measured);
+# messages published before that are lost unless latched.
+CONNECT_DELAY_NS = 50_000_000
+WORLD_CALLERID = "/gazebo"
+DRIVER_CALLERID = "/rosgrade_driver"
+GROUND_TRUTH_TOPIC = "/ground_truth/odom"
+TWIST = "geometry_msgs/Twist"
+# Wall seconds the runtime waits for a process to go once its channel has closed, before killing it.
+EXIT_WAIT_WALL_S = 5.0
+
+
+class RunError(Exception):
+    """A run could not be carried out at all (the grader's side failed, not the node)."""
+
+
+def _ns(seconds: float) -> int:
+    return round(seconds * 1e9)
+
+
+def _s(t_ns: int | None) -> float | None:
+    return None if t_ns is None else t_ns / 1e9
+
+
+@dataclass
+class _Node:
+    """One node in a session: its process, its channel, and where it is in the lockstep."""
+
+    spec: NodeSpec
+    process: NodeProcess
+    link: NodeLink
+    outcome: NodeOutcome
+    alive: bool = True
+    wake_ns: int | None = None
+    deliveries: list[tuple[int, bytes]] = field(default_factory=list)
+    term_ns: int | None = None
+    kill_ns: int | None = None
+
+    @property
+    def callerid(self) -> str:
+        return self.link.state.name or "/unnamed"
+
+
+class Session:
+    """One run of one scenario with its nodes; `run()` returns what was observed, the recording holds the rest."""
+
+    def __init__(self, spec: RunSpec, recording: Path, log: Path) -> None:
+        self.spec = spec
+        self.recording_path = recording
+        self.log_path = log
+        self.catalog = MessageCatalog()
+        self.world = World(spec.scenario)
+        self.start_ns = self.world.time_ns
+        self.end_ns = self.start_ns + _ns(spec.scenario.duration)
+        self.shutdown_ns = (None if spec.scenario.shutdown_at is None
+                            else self.start_ns + _ns(spec.scenario.shutdown_at))
+        self.shutdown_sent = False
+        self.last_exit_ns: int | None = None
+        self.seq: dict[str, int] = {}
+        self.nodes: list[_Node] = []
+        self.received: dict[str, int] = {}  # command topic -> commands the robot received from nodes
+        self._log_file = None
+        self._recorder: Recorder | None = None
+
+    # -- public ------------------------------------------------------------------------------------------------
+    def run(self) -> RunResult:
+        wall0 = time.monotonic()
+        self.recording_path.parent.mkdir(parents=True, exist_ok=True)
+        workroot = Path(tempfile.mkdtemp(prefix="rosgrade-node-"))
+        with Recorder(self.recording_path, metadata={"rosgrade": self._world_metadata()}) as rec, \
+                open(self.log_path, "w", encoding="utf-8") as log_file:
+            self._recorder, self._log_file = rec, log_file
+            try:
+                for index, node_spec in enumerate(self.spec.nodes):
+                    self._start(node_spec, workroot / f"node{index}")
+                self._loop(wall0)
+            finally:
+                for node in self.nodes:
+                    if node.alive:
+                        self._stop(node, "stopped_at_end",
+                                   "still running when the scenario ended; stopped by the grader")
+                    node.process.close()
+            diagnostics = diagnose(self)
+            result = RunResult(
+                recording=self.recording_path, log=self.log_path, started_s=self.start_ns / 1e9,
+                ended_s=self.world.time_ns / 1e9,
+                shutdown_requested_s=_s(self.shutdown_ns) if self.shutdown_sent else None,
+                nodes=[n.outcome for n in self.nodes], diagnostics=diagnostics,
+                wall_s=time.monotonic() - wall0)
+            rec.add_metadata("rosgrade.run", self._run_metadata(result))
+        return result
+
+    # -- starting and stopping nodes ---------------------------------------------------------------------------
+    def _start(self, node_spec: NodeSpec, workdir: Path) -> None:
+        outcome = NodeOutcome(script=node_spec.script.name)
+        raw = self.log_path.with_suffix(f".raw{len(self.nodes)}.log")
+        try:
+            process = NodeProcess(node_spec, workdir, raw, self.spec.limits)
+        except ProcessError as exc:
+            outcome.status, outcome.message = "failed_to_start", str(exc)
+            raise RunError(str(exc)) from None
+        link = NodeLink(process.read_fd, process.write_fd, self.catalog, self.spec.limits.silent_wall_s,
+                        self.spec.limits.output_bytes)
+        node = _Node(node_spec, process, link, outcome)
+        self.nodes.append(node)
+        t = self.world.time_ns
+        try:
+            link.handshake({"t_ns": t, "params": {"/use_sim_time": True, **node_spec.params},
+                            "ros_namespace": node_spec.ros_namespace or "/", "wall_epoch": _wall_epoch(t)})
+        except (NodeExited, NodeSilent, ProtocolViolation) as exc:
+            self._node_failed(node, exc, t)
+            return
+        self._step(node, t, first=True)
+
+    def _stop(self, node: _Node, status: str, message: str) -> None:
+        node.process.signal_group(signal.SIGKILL)
+        code = node.process.wait(EXIT_WAIT_WALL_S)
+        self._ended(node, status, message, code)
+
+    def _ended(self, node: _Node, status: str, message: str, code: int | None) -> None:
+        node.alive = False
+        node.outcome.status, node.outcome.message = status, message
+        if code is not None:
+            node.outcome.exit_code = code if code >= 0 else None
+            node.outcome.exit_signal = -code if code < 0 else None
+        node.outcome.name = node.link.state.name
+        node.outcome.ended_s = self.world.time_ns / 1e9
+        node.outcome.exception = node.link.state.exception
+        self.last_exit_ns = self.world.time_ns
+        for line in node.link.flush_output():
+            self._output(node, line, self.world.time_ns)
+
+    def _node_failed(self, node: _Node, exc: Exception, t: int) -> None:
+        if isinstance(exc, NodeExited):
+            code = node.process.wait(EXIT_WAIT_WALL_S)
+            if code is None:
+                node.process.signal_group(signal.SIGKILL)
+                code = node.process.wait(EXIT_WAIT_WALL_S)
+            status, message = _exit_status(code)
+            self._ended(node, status, message, code)
+        elif isinstance(exc, NodeSilent):
+            self._stop(node, "timeout", f"the node {exc}; it was stopped (an endless loop outside rospy calls, "
+                                        "or a blocking call such as input() with nothing to read)")
+        else:
+            self._stop(node, "protocol_violation", f"the node broke the grader's channel: {exc}")
+
+    # -- the loop ----------------------------------------------------------------------------------------------
+    def _loop(self, wall0: float) -> None:
+        limits = self.spec.limits
+        while True:
+            alive = [n for n in self.nodes if n.alive]
+            if time.monotonic() - wall0 > limits.wall_s:
+                for node in alive:
+                    self._stop(node, "timeout", f"the run exceeded its wall-clock budget of {limits.wall_s:g} s")
+                alive = []
+            horizon = self.end_ns
+            if not alive:
+                settle = (self.last_exit_ns or self.world.time_ns) + _ns(self.spec.settle_s)
+                horizon = min(horizon, settle)
+            t = self.world.time_ns
+            pending_now = any(n.deliveries for n in alive)
+            if pending_now:
+                t_next = t
+            else:
+                candidates = [horizon, self.world.next_output_ns()]
+                for node in alive:
+                    candidates += [c for c in (node.wake_ns, node.term_ns, node.kill_ns) if c is not None]
+                if self.shutdown_ns is not None and not self.shutdown_sent and alive:
+                    candidates.append(max(self.shutdown_ns, t))
+                t_next = min(candidates)
+            if t_next > horizon:
+                t_next = horizon
+            if t_next > t:
+                for sample in self.world.advance_to(t_next):
+                    self._world_sample(sample, alive)
+            if t_next >= horizon:
+                return
+            shutdown = None
+            if self.shutdown_ns is not None and not self.shutdown_sent and t_next >= self.shutdown_ns and alive:
+                self.shutdown_sent = True
+                shutdown = "signal-2"
+                for node in alive:
+                    node.term_ns = t_next + _ns(self.spec.shutdown_grace_s)
+            for node in alive:
+                if node.kill_ns is not None and t_next >= node.kill_ns:
+                    self._stop(node, "killed_after_shutdown",
+                               "ignored Ctrl+C and SIGTERM (no rospy.is_shutdown() check?); killed with SIGKILL")
+                    continue
+                if node.term_ns is not None and node.kill_ns is None and t_next >= node.term_ns:
+                    node.process.signal_group(signal.SIGTERM)
+                    node.kill_ns = t_next + _ns(1.0)
+                    if node.process.wait(0.2) is not None:
+                        self._ended(node, *_exit_status(node.process.popen.returncode),
+                                    node.process.popen.returncode)
+                        continue
+                due = node.wake_ns is not None and node.wake_ns <= t_next
+                if due or node.deliveries or shutdown:
+                    self._step(node, t_next, shutdown=shutdown)
+
+    def _step(self, node: _Node, t: int, shutdown: str | None = None, first: bool = False) -> None:
+        """Let one node run at world time t until it yields, handling everything it does on the way."""
+        link = node.link
+        try:
+            if not first:
+                clock = (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if link.state.init_ns is not None else 0
+                deliveries, node.deliveries = node.deliveries, []
+                link.resume(t, clock, deliveries, shutdown)
+            node.wake_ns = link.run_until_wait(t, lambda event: self._node_event(node, event, t))
+        except (NodeExited, NodeSilent, ProtocolViolation) as exc:
+            self._node_failed(node, exc, t)
+
+    # -- what nodes do -----------------------------------------------------------------------------------------
+    def _node_event(self, node: _Node, event: object, t: int) -> None:
+        if isinstance(event, Publication):
+            self._publication(node, event.endpoint, event.data, t)
+        elif isinstance(event, OutputLine):
+            self._output(node, event, t)
+        elif isinstance(event, LogLine):
+            self._recorder.write("/rosout", "rosgraph_msgs/Log",
+                                 log_bytes(t, self._next_seq("/rosout"), event.level, node.callerid, event.msg,
+                                           event.file, event.function, event.line,
+                                           sorted({e.topic for e in node.link.state.publishers.values()})),
+                                 t, callerid=node.callerid)
+
+    def _connected(self, node: _Node, endpoint: Endpoint, t: int) -> bool:
+        since = max(endpoint.registered_ns, node.link.state.init_ns or t)
+        return t >= since + CONNECT_DELAY_NS
+
+    def _publication(self, node: _Node, endpoint: Endpoint, data: bytes, t: int) -> None:
+        self._recorder.write(endpoint.topic, endpoint.type, data, t, callerid=node.callerid, latching=endpoint.latch)
+        if not self._connected(node, endpoint, t):
+            endpoint.dropped_before_connect += 1
+            return
+        if endpoint.topic in self.world.command_topics and endpoint.type == TWIST:
+            linear, angular = decode_twist(data)
+            self.world.command(endpoint.topic, linear=linear, angular=angular)
+            self.received[endpoint.topic] = self.received.get(endpoint.topic, 0) + 1
+        for other in self.nodes:
+            if other.alive:
+                for sub in other.link.state.subscribers.values():
+                    if sub.topic == endpoint.topic and sub.type == endpoint.type and self._connected(other, sub, t):
+                        other.deliveries.append((sub.ident, data))
+                        sub.count += 1
+
+    def _output(self, node: _Node, line: OutputLine, t: int) -> None:
+        topic = "/rosgrade/stdout" if line.stream == 1 else "/rosgrade/stderr"
+        self._recorder.write(topic, "std_msgs/String", string_bytes(line.text), t, callerid=node.callerid)
+        self._log_file.write(f"[{t / 1e9:12.6f}] {'out' if line.stream == 1 else 'err'} | {line.text}\n")
+
+    # -- what the world does -----------------------------------------------------------------------------------
+    def _next_seq(self, topic: str) -> int:
+        seq = self.seq.get(topic, 0)
+        self.seq[topic] = seq + 1
+        return seq
+
+    def _world_sample(self, sample: object, alive: list[_Node]) -> None:
+        rec = self._recorder
+        if isinstance(sample, OdometrySample):
+            data = odometry_bytes(sample, self._next_seq(sample.topic))
+            rec.write(sample.topic, "nav_msgs/Odometry", data, sample.t_ns, callerid=WORLD_CALLERID)
+            self._deliver(sample.topic, "nav_msgs/Odometry", data, sample.t_ns, alive)
+        elif isinstance(sample, TransformSample):
+            data = tf_bytes(sample, self._next_seq("/tf"))
+            rec.write("/tf", "tf2_msgs/TFMessage", data, sample.t_ns, callerid=WORLD_CALLERID)
+            self._deliver("/tf", "tf2_msgs/TFMessage", data, sample.t_ns, alive)
+        elif isinstance(sample, GroundTruthSample):
+            data = ground_truth_bytes(sample, self._next_seq(GROUND_TRUTH_TOPIC))
+            rec.write(GROUND_TRUTH_TOPIC, "nav_msgs/Odometry", data, sample.t_ns, callerid=WORLD_CALLERID)
+        elif isinstance(sample, CommandSample):
+            rec.write(sample.topic, TWIST, twist_bytes(sample.linear, sample.angular), sample.t_ns,
+                      callerid=DRIVER_CALLERID)
+
+    def _deliver(self, topic: str, type_name: str, data: bytes, t: int, alive: list[_Node]) -> None:
+        for node in alive:
+            for sub in node.link.state.subscribers.values():
+                if sub.topic == topic and sub.type == type_name and self._connected(node, sub, t):
+                    node.deliveries.append((sub.ident, data))
+                    sub.count += 1
+
+    # -- metadata ----------------------------------------------------------------------------------------------
+    def _world_metadata(self) -> dict[str, str]:
+        scenario = self.spec.scenario
+        return {
+            "rosgrade_version": __version__,
+            "mujoco_version": mujoco.__version__,
+            "robot": scenario.robot,
+            "scenario_name": self.spec.name,
+            "scenario": scenario.model_dump_json(),
+        }
+
+    def _run_metadata(self, result: RunResult) -> dict[str, str]:
+        first = result.nodes[0] if result.nodes else NodeOutcome(script="")
+        return {
+            "status": result.status,
+            "started_s": repr(result.started_s),
+            "ended_s": repr(first.ended_s if first.ended_s is not None else result.ended_s),
+            "world_ended_s": repr(result.ended_s),
+            "shutdown_requested_s": json.dumps(result.shutdown_requested_s),
+            "exit_code": json.dumps(first.exit_code),
+            "exit_signal": json.dumps(first.exit_signal),
+            "nodes": json.dumps([asdict(n) for n in result.nodes]),
+            "diagnostics": json.dumps(result.diagnostics),
+        }
+
+
+def _wall_epoch(t_ns: int) -> float:
+    """A fixed wall-clock epoch for the node's time.time(), so log lines are identical run to run."""
+    return 1_700_000_000.0 - t_ns / 1e9
+
+
+def _exit_status(code: int | None) -> tuple[str, str]:
+    if code is None:
+        return "timeout", "closed its channel but did not exit"
+    if code >= 0:
+        return "exited", f"exited with code {code}"
+    sig = -code
+    if sig == signal.SIGXCPU:
+        return "killed_by_limit", "exceeded its CPU-time limit"
+    if sig == signal.SIGXFSZ:
+        return "killed_by_limit", "exceeded its file-size limit"
+    name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else str(sig)
+    return "crashed", f"died from signal {name}"
+
+
+def run(spec: RunSpec, recording: Path, log: Path) -> RunResult:
+    """Run the scenario with its nodes, write the recording and the node log, and report what happened."""
+    return Session(spec, recording, log).run()

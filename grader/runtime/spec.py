@@ -1,0 +1,97 @@
+"""What a run is asked to do (nodes, limits) and what it reports back (statuses, exit codes, diagnostics)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Literal
+
+if TYPE_CHECKING:
+    from sim import Scenario
+
+# Statuses a node ends a run in; each comes with a plain explanation in NodeOutcome.message.
+NodeStatus = Literal[
+    "exited",             # the process ended by itself (any exit code)
+    "stopped_at_end",     # still running when the scenario's time was up; stopped by the grader
+    "killed_after_shutdown",  # ignored Ctrl+C and SIGTERM; killed after the grace period
+    "timeout",            # exceeded its wall-clock budget or stopped answering (hung outside the client library)
+    "crashed",            # died from a signal it did not ask for (segfault, abort)
+    "killed_by_limit",    # exceeded a CPU, memory, process, file-size or output limit
+    "protocol_violation",  # sent something that is not a valid frame
+    "failed_to_start",    # could not be started at all
+]
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Resource limits for one node process; enforced with rlimits and the grader's own watchdogs."""
+
+    wall_s: float = 120.0         # whole run, wall clock
+    silent_wall_s: float = 10.0   # longest a node may run without yielding to the grader
+    cpu_s: float = 120.0
+    memory_mb: int = 1024
+    processes: int = 64
+    file_mb: int = 64
+    output_bytes: int = 4 * 1024 * 1024
+
+
+@dataclass(frozen=True)
+class NodeSpec:
+    """One node to run: a script, its arguments (remaps included, e.g. ``cmd_vel:=/x``), stdin and namespace."""
+
+    script: Path
+    args: tuple[str, ...] = ()
+    stdin: str | None = None
+    ros_namespace: str | None = None
+    params: dict[str, object] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    """A scenario and the nodes that run in it."""
+
+    scenario: Scenario
+    nodes: tuple[NodeSpec, ...]
+    limits: Limits = Limits()
+    name: str = "nominal"
+    # Sim seconds a node gets after Ctrl+C before SIGTERM, then before SIGKILL.
+    shutdown_grace_s: float = 5.0
+    # Sim seconds the world keeps running after the last node has gone, so a robot left moving is seen moving.
+    settle_s: float = 5.0
+
+
+@dataclass
+class NodeOutcome:
+    """How one node's run ended."""
+
+    script: str
+    name: str | None = None
+    status: NodeStatus = "exited"
+    message: str = ""
+    exit_code: int | None = None
+    exit_signal: int | None = None
+    ended_s: float | None = None
+    exception: dict | None = None
+    findings: list[str] = field(default_factory=list)
+
+
+@dataclass
+class RunResult:
+    """What the grader observed in one run, besides the recording itself."""
+
+    recording: Path
+    log: Path
+    started_s: float
+    ended_s: float
+    shutdown_requested_s: float | None
+    nodes: list[NodeOutcome]
+    diagnostics: list[str]
+    wall_s: float = 0.0
+
+    @property
+    def status(self) -> str:
+        """The worst node status, for one-word summaries."""
+        order = ["protocol_violation", "killed_by_limit", "crashed", "timeout", "failed_to_start",
+                 "killed_after_shutdown", "stopped_at_end", "exited"]
+        statuses = [n.status for n in self.nodes] or ["exited"]
+        return min(statuses, key=order.index)
+
