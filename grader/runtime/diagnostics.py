@@ -17,7 +17,9 @@ def diagnose(session: Session) -> list[str]:
     """Findings for every node of a finished session, most useful first."""
     world = session.world
     command_topics = tuple(world.command_topics)
-    world_topics = {world.robot.odometry.topic: "nav_msgs/Odometry", "/tf": "tf2_msgs/TFMessage"}
+    world_topics = {world.mode.odometry.topic: "nav_msgs/Odometry"}
+    if world.mode.tf is not None:
+        world_topics["/tf"] = "tf2_msgs/TFMessage"
     robot_received = sum(session.received.values())
     notes: list[str] = []
     for node in session.nodes:

@@ -77,9 +77,8 @@ class Session:
         self.catalog = MessageCatalog()
         self.world = World(spec.scenario)
         self.start_ns = self.world.time_ns
-        self.end_ns = self.start_ns + _ns(spec.scenario.duration)
-        self.shutdown_ns = (None if spec.scenario.shutdown_at is None
-                            else self.start_ns + _ns(spec.scenario.shutdown_at))
+        self.end_ns = spec.scenario.end_ns
+        self.shutdown_ns = spec.scenario.shutdown_ns
         self.shutdown_sent = False
         self.last_exit_ns: int | None = None
         self.seq: dict[str, int] = {}

@@ -1,0 +1,108 @@
+"""MuJoCo model of a diff-drive robot profile, built to the reference recipe that tracks commanded twists to ~0.01 %.
+
+Recipe (robots-and-sim.md §2–§4): free-joint base; sphere wheels (one contact each, no scrub torque) with priority 1
+so their stiff solref is not averaged with the floor's; frictionless priority-1 ball casters (condim 1); implicitfast,
+elliptic cone, impratio 10; ``<velocity>`` servos plus joint armature; contact margin equal to the static
+penetration so the rolling radius is the geometric one.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mujoco
+
+from sim.clock import PHYSICS_HZ
+from sim.profile import RobotProfile
+
+CONTACT_SOLREF = "0.004 1"
+CONTACT_SOLIMP = "0.95 0.99 0.001"
+WHEEL_FRICTION = "1 0.005 0.0001"
+SETTLE_STEPS = PHYSICS_HZ // 2  # long enough for the contacts to reach static penetration
+
+
+@dataclass(frozen=True)
+class RobotModel:
+    """A compiled model plus the addresses the world reads every tick."""
+
+    model: mujoco.MjModel
+    wheel_radius: float  # the physical (actual) rolling radius, which imperfections may change
+    wheel_qpos: tuple[int, int]  # left, right
+    wheel_qvel: tuple[int, int]
+    wheel_ctrl: tuple[int, int]
+
+
+def mjcf(profile: RobotProfile, wheel_radius: float) -> str:
+    """The MJCF text of ``profile`` with wheels of physical radius ``wheel_radius`` (floats written exactly)."""
+    g, a = profile.geometry, profile.actuator
+    half = g.wheel_separation / 2
+    wheels = "".join(
+        f"""
+      <body name="wheel_{side}" pos="0 {y!r} {wheel_radius!r}">
+        <joint name="wheel_{side}" type="hinge" axis="0 1 0" armature="{a.armature!r}"/>
+        <geom name="wheel_{side}" class="contact" type="sphere" size="{wheel_radius!r}" mass="{g.wheel_mass!r}"
+              friction="{WHEEL_FRICTION}" condim="3"/>
+      </body>"""
+        for side, y in (("left", half), ("right", -half))
+    )
+    casters = "".join(
+        f"""
+      <geom name="caster_{i}" class="contact" type="sphere" size="{c.radius!r}"
+            pos="{c.x!r} {c.y!r} {c.radius + c.clearance!r}" friction="0" condim="1"/>"""
+        for i, c in enumerate(g.casters)
+    )
+    actuators = "".join(
+        f"""
+    <velocity name="wheel_{side}" joint="wheel_{side}" kv="{a.kv!r}" forcerange="{-a.forcerange!r} {a.forcerange!r}"/>"""
+        for side in ("left", "right")
+    )
+    com = " ".join(repr(v) for v in g.com)
+    inertia = " ".join(repr(v) for v in g.base_inertia)
+    return f"""<mujoco model="{profile.name}">
+  <compiler angle="radian" autolimits="true"/>
+  <option timestep="{1 / PHYSICS_HZ!r}" integrator="implicitfast" cone="elliptic" impratio="10"/>
+  <default>
+    <default class="contact">
+      <geom priority="1" solref="{CONTACT_SOLREF}" solimp="{CONTACT_SOLIMP}"/>
+    </default>
+  </default>
+  <worldbody>
+    <geom name="floor" type="plane" size="0 0 1"/>
+    <body name="base">
+      <freejoint name="base"/>
+      <inertial pos="{com}" mass="{g.base_mass!r}" diaginertia="{inertia}"/>{casters}{wheels}
+    </body>
+  </worldbody>
+  <actuator>{actuators}
+  </actuator>
+</mujoco>
+"""
+
+
+def build_model(profile: RobotProfile, wheel_radius_scale: float = 1.0) -> RobotModel:
+    """Compile ``profile`` (wheels scaled by ``wheel_radius_scale``) and set each contact's margin to its static penetration."""
+    wheel_radius = profile.geometry.wheel_radius * wheel_radius_scale
+    model = mujoco.MjModel.from_xml_string(mjcf(profile, wheel_radius))
+    _compensate_penetration(model)
+    joints = [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, f"wheel_{side}") for side in ("left", "right")]
+    actuators = [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, f"wheel_{side}") for side in ("left", "right")]
+    return RobotModel(
+        model=model,
+        wheel_radius=wheel_radius,
+        wheel_qpos=(int(model.jnt_qposadr[joints[0]]), int(model.jnt_qposadr[joints[1]])),
+        wheel_qvel=(int(model.jnt_dofadr[joints[0]]), int(model.jnt_dofadr[joints[1]])),
+        wheel_ctrl=(actuators[0], actuators[1]),
+    )
+
+
+def _compensate_penetration(model: mujoco.MjModel) -> None:
+    """Let the robot settle, then give each touching geom a margin equal to its penetration (so it rests at distance 0).
+
+    Friction acts at the middle of the penetration, so a sinking wheel rolls on r − pen/2; with the margin the
+    constraint's equilibrium moves to the surface and the rolling radius is the geometric one.
+    """
+    data = mujoco.MjData(model)
+    mujoco.mj_step(model, data, nstep=SETTLE_STEPS)
+    floor = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "floor")
+    for contact in data.contact[: data.ncon]:
+        robot_geom = contact.geom2 if contact.geom1 == floor else contact.geom1
+        model.geom_margin[robot_geom] = max(float(model.geom_margin[robot_geom]), -float(contact.dist))
