@@ -181,6 +181,8 @@ class NodeLink:
             type_name = _field(obj, "type", str)
             if not self._catalog.known(type_name):
                 raise ProtocolViolation(f"unknown message type {type_name[:80]!r}")
+            if obj.get("md5sum") != self._catalog.md5sum(type_name):
+                raise ProtocolViolation(f"md5sum for {type_name} does not match its definition")
             queue_size = obj.get("queue_size")
             endpoint = Endpoint(
                 ident=_field(obj, "id", int), topic=_topic(_field(obj, "topic", str)), type=type_name,

@@ -289,7 +289,8 @@ class Session:
             rec.write("/tf", "tf2_msgs/TFMessage", data, sample.t_ns, callerid=WORLD_CALLERID)
             self._deliver("/tf", "tf2_msgs/TFMessage", data, sample.t_ns, alive)
         elif isinstance(sample, GroundTruthSample):
-            data = ground_truth_bytes(sample, self._next_seq(GROUND_TRUTH_TOPIC))
+            data = ground_truth_bytes(sample, self._next_seq(GROUND_TRUTH_TOPIC),
+                                      child_frame_id=self.world.mode.odometry.child_frame_id)
             rec.write(GROUND_TRUTH_TOPIC, "nav_msgs/Odometry", data, sample.t_ns, callerid=WORLD_CALLERID)
         elif isinstance(sample, CommandSample):
             rec.write(sample.topic, TWIST, twist_bytes(sample.linear, sample.angular), sample.t_ns,
@@ -309,6 +310,9 @@ class Session:
             "rosgrade_version": __version__,
             "mujoco_version": mujoco.__version__,
             "robot": scenario.robot,
+            "base_mode": self.world.mode_name,
+            "odometry_topic": self.world.mode.odometry.topic,
+            "command_topics": json.dumps(list(self.world.command_topics)),
             "scenario_name": self.spec.name,
             "scenario": scenario.model_dump_json(),
         }

@@ -1,0 +1,228 @@
+"""Container readers: our ROS 1 MCAP, ROS 1 bags and ROS 2 bags, loaded into one in-memory shape.
+
+rosbags' MCAP reader rejects profile ``ros1``, so our files are read with mcap's streaming reader (which also gets
+the readable part of a truncated file) and decoded with a type store built from the file's own schemas.
+Everything else goes through rosbags' AnyReader.
+"""
+from __future__ import annotations
+
+import struct
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from mcap.exceptions import EndOfFile
+from mcap.records import Channel as McapChannel
+from mcap.records import Footer, Header, Message, Metadata, Schema
+from mcap.stream_reader import CRCValidationError, StreamReader
+from rosbags.highlevel import AnyReader
+from rosbags.interfaces import ConnectionExtRosbag1
+from rosbags.typesys import Stores, get_types_from_msg, get_typestore
+from rosbags.typesys.store import Typestore
+
+from grader.recording.errors import RecordingError
+from grader.recording.messages import ros1_type_name
+
+MCAP_MAGIC = b"\x89MCAP0\r\n"
+BAG_MAGIC = b"#ROSBAG V2.0\n"
+SQLITE_MAGIC = b"SQLite format 3\x00"
+
+
+@dataclass(frozen=True)
+class ChannelInfo:
+    """One (topic, callerid, type) of a recording."""
+
+    key: int
+    topic: str
+    type: str  # ROS 1 spelling
+    store_type: str  # the type store's spelling, to decode with
+    callerid: str
+    latching: bool
+    md5sum: str  # of the file's own definition; "" for ROS 2
+
+
+@dataclass
+class Source:
+    """A whole recording in memory: channels, messages in log-time order, metadata, and how to decode payloads."""
+
+    format: str  # 'mcap-ros1' | 'rosbag1' | 'rosbag2'
+    encoding: str  # payload encoding: 'ros1' | 'cdr'
+    typestore: Typestore
+    channels: dict[int, ChannelInfo] = field(default_factory=dict)
+    messages: list[tuple[int, int, bytes]] = field(default_factory=list)  # (channel key, log time ns, payload)
+    metadata: dict[str, dict[str, str]] = field(default_factory=dict)
+    truncated: str | None = None
+
+    def deserialize(self, data: bytes, channel: ChannelInfo) -> object:
+        """Decode one payload with the file's types; RecordingError naming the topic when it does not parse."""
+        try:
+            if self.encoding == "ros1":
+                return self.typestore.deserialize_ros1(data, channel.store_type)
+            return self.typestore.deserialize_cdr(data, channel.store_type)
+        except Exception as exc:  # noqa: BLE001 - untrusted bytes: any parse failure is a data error
+            raise RecordingError(f"a message on {channel.topic} does not decode as {channel.type}: {exc}") from None
+
+
+def _unreadable(path: Path, reason: str) -> RecordingError:
+    return RecordingError(f"{path} is not a readable recording: {reason}")
+
+
+def _describe(exc: BaseException) -> str:
+    """An exception as one line; rosbags' reader errors speak for themselves, others get their class name."""
+    text = str(exc)
+    if not text:
+        return type(exc).__name__
+    return text if type(exc).__name__.endswith("ReaderError") else f"{type(exc).__name__}: {text}"
+
+
+def load(path: str | Path) -> Source:
+    """Read a recording of any supported format, telling the format by content rather than by name."""
+    path = Path(path)
+    if not path.exists():
+        raise _unreadable(path, "no such file or directory")
+    if path.is_dir():
+        return _load_anyreader(path, "rosbag2")
+    try:
+        with open(path, "rb") as file:
+            head = file.read(64)
+    except OSError as exc:
+        raise _unreadable(path, exc.strerror or str(exc)) from None
+    if not head:
+        raise _unreadable(path, "the file is empty")
+    if head.startswith(MCAP_MAGIC):
+        if _mcap_profile(head) in ("ros1", None):  # None: too damaged to tell; our reader says how
+            return _load_mcap_ros1(path)
+        return _load_anyreader(path, "rosbag2", suffix=".mcap")
+    if head.startswith(BAG_MAGIC):
+        return _load_anyreader(path, "rosbag1", suffix=".bag")
+    if head.startswith(SQLITE_MAGIC):
+        return _load_anyreader(path, "rosbag2", suffix=".db3")
+    raise _unreadable(path, "not an MCAP file, a ROS 1 bag or a ROS 2 bag")
+
+
+def _mcap_profile(head: bytes) -> str | None:
+    """The profile in the Header record that follows the magic, if the first bytes hold it."""
+    try:
+        opcode, _ = struct.unpack_from("<BQ", head, len(MCAP_MAGIC))
+        (size,) = struct.unpack_from("<I", head, len(MCAP_MAGIC) + 9)
+        start = len(MCAP_MAGIC) + 13
+        return head[start : start + size].decode() if opcode == 0x01 else None
+    except (struct.error, UnicodeDecodeError):
+        return None
+
+
+def _load_mcap_ros1(path: Path) -> Source:
+    """Stream every record; on damage keep what came before and say where it stopped."""
+    schemas: dict[int, Schema] = {}
+    raw_channels: dict[int, McapChannel] = {}
+    messages: list[tuple[int, int, bytes]] = []
+    metadata: dict[str, dict[str, str]] = {}
+    truncated: str | None = None
+    seen_header = seen_footer = False
+    with open(path, "rb") as file:
+        # A record longer than the file is corrupt: refuse it before allocating.
+        reader = StreamReader(file, validate_crcs=True, record_size_limit=max(path.stat().st_size, 1))
+        try:
+            for record in reader.records:
+                if isinstance(record, Message):
+                    messages.append((record.channel_id, record.log_time, record.data))
+                elif isinstance(record, McapChannel):
+                    raw_channels.setdefault(record.id, record)
+                elif isinstance(record, Schema):
+                    schemas.setdefault(record.id, record)
+                elif isinstance(record, Metadata):
+                    metadata[record.name] = dict(record.metadata)
+                elif isinstance(record, Header):
+                    seen_header = True
+                elif isinstance(record, Footer):
+                    seen_footer = True
+        except Exception as exc:  # noqa: BLE001 - mcap raises assorted errors on damaged input
+            truncated = _mcap_damage(exc)
+    if not seen_header:
+        raise _unreadable(path, truncated or "no MCAP header")
+    if not seen_footer and truncated is None:
+        truncated = "truncated (no footer)"
+    if truncated is not None:
+        if not messages:
+            raise _unreadable(path, f"{truncated}, before any complete message")
+        truncated = f"{truncated}; {len(messages)} messages before that were read"
+    source = Source("mcap-ros1", "ros1", _typestore_from_schemas(path, schemas), metadata=metadata, truncated=truncated)
+    for channel in raw_channels.values():
+        schema = schemas.get(channel.schema_id)
+        if schema is None or schema.encoding != "ros1msg" or channel.message_encoding != "ros1":
+            continue  # nothing to decode it with
+        type_name = ros1_type_name(schema.name)
+        package, name = type_name.split("/")
+        store_type = f"{package}/msg/{name}"
+        md5sum = source.typestore.generate_msgdef(store_type, ros_version=1)[1]
+        source.channels[channel.id] = ChannelInfo(
+            channel.id,
+            channel.topic,
+            type_name,
+            store_type,
+            channel.metadata.get("callerid", ""),
+            channel.metadata.get("latching", "false").lower() in ("true", "1"),
+            md5sum,
+        )
+    source.messages = sorted((m for m in messages if m[0] in source.channels), key=lambda m: m[1])
+    return source
+
+
+def _ros1_spelling(msgtype: str) -> str:
+    """``pkg/Name`` for ``pkg/msg/Name``; other interface names (ROS 2 services, actions) stay as they are."""
+    parts = msgtype.split("/")
+    return f"{parts[0]}/{parts[2]}" if len(parts) == 3 and parts[1] == "msg" else msgtype
+
+
+def _mcap_damage(exc: BaseException) -> str:
+    """Why the MCAP stream stopped, in words."""
+    if isinstance(exc, (EndOfFile, struct.error)):
+        return "truncated (the file ends inside a record)"
+    if isinstance(exc, CRCValidationError):
+        return "damaged (a chunk fails its checksum)"
+    return f"damaged ({_describe(exc)})"
+
+
+def _typestore_from_schemas(path: Path, schemas: dict[int, Schema]) -> Typestore:
+    """A type store holding exactly the definitions the file carries."""
+    store = get_typestore(Stores.EMPTY)
+    types = {}
+    try:
+        for schema in schemas.values():
+            if schema.encoding == "ros1msg":
+                types.update(get_types_from_msg(schema.data.decode(), ros1_type_name(schema.name)))
+        store.register(types)
+    except Exception as exc:  # noqa: BLE001 - the schema text is file content, not code
+        raise _unreadable(path, f"bad message definition ({_describe(exc)})") from None
+    return store
+
+
+def _load_anyreader(path: Path, fmt: str, suffix: str | None = None) -> Source:
+    """ROS 1 bags and ROS 2 bags (folder, .db3, .mcap) through rosbags, which picks the reader by file suffix."""
+    if suffix is not None and path.suffix != suffix:
+        raise _unreadable(path, f"looks like a {fmt} file; name it *{suffix} to read it")
+    try:
+        with AnyReader([path]) as reader:
+            source = Source(fmt, "cdr" if reader.is2 else "ros1", reader.typestore)
+            keys = {}
+            for key, connection in enumerate(reader.connections):
+                keys[id(connection)] = key
+                ext = connection.ext
+                is_ros1 = isinstance(ext, ConnectionExtRosbag1)
+                source.channels[key] = ChannelInfo(
+                    key,
+                    connection.topic,
+                    _ros1_spelling(connection.msgtype),
+                    connection.msgtype,
+                    (ext.callerid or "") if is_ros1 else "",
+                    bool(ext.latching) if is_ros1 else False,
+                    connection.digest if is_ros1 else "",
+                )
+            source.messages = [
+                (keys[id(connection)], t_ns, bytes(data)) for connection, t_ns, data in reader.messages()
+            ]
+    except RecordingError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - rosbags raises assorted errors on damaged input
+        raise _unreadable(path, _describe(exc)) from None
+    source.messages.sort(key=lambda m: m[1])
+    return source

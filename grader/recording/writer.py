@@ -1,0 +1,174 @@
+"""The run recorder: one deterministic ROS 1 MCAP per run (same inputs give a byte-identical file)."""
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from types import TracebackType
+from typing import BinaryIO
+
+from mcap.writer import CompressionType, Writer
+
+from grader import __version__
+from grader.recording.errors import RecordingError
+from grader.recording.messages import MessageCatalog, default_catalog, ros1_type_name
+
+# Metadata record the recorder adds when the size cap dropped messages.
+CAP_METADATA = "rosgrade.recording"
+
+
+@dataclass(slots=True)
+class _Channel:
+    id: int
+    type_name: str
+    sequence: int = 0
+
+
+def metadata_strings(name: str, values: Mapping[str, object]) -> dict[str, str]:
+    """MCAP metadata values are strings: keep strings, JSON-encode everything else (sorted keys: deterministic)."""
+    if not isinstance(name, str) or not name:
+        raise RecordingError(f"metadata name must be a non-empty string, not {name!r}")
+    out: dict[str, str] = {}
+    for key, value in values.items():
+        if not isinstance(key, str):
+            raise RecordingError(f"metadata {name!r}: key {key!r} is not a string")
+        try:
+            out[key] = value if isinstance(value, str) else json.dumps(value, sort_keys=True)
+        except (TypeError, ValueError) as exc:
+            raise RecordingError(f"metadata {name!r}: value of {key!r} is not JSON-serializable: {exc}") from None
+    return out
+
+
+class Recorder:
+    """Writes messages to a ROS 1 MCAP: one schema per type, one channel per (topic, callerid), sim-time stamps.
+
+    ``max_bytes`` caps the total payload; messages beyond it are dropped, counted and noted in the
+    ``rosgrade.recording`` metadata record, so a flooding node cannot fill the disk.
+    """
+
+    def __init__(
+        self,
+        path: str | Path,
+        metadata: Mapping[str, Mapping[str, object]] | None = None,
+        *,
+        max_bytes: int | None = None,
+        chunk_size: int = 1 << 20,
+        catalog: MessageCatalog | None = None,
+    ) -> None:
+        self._path = Path(path)
+        self._initial_metadata = {name: metadata_strings(name, values) for name, values in (metadata or {}).items()}
+        self._max_bytes = max_bytes
+        self._chunk_size = chunk_size
+        self._catalog = catalog or default_catalog()
+        self._file: BinaryIO | None = None
+        self._writer: Writer | None = None
+        self._closed = False
+        self._schemas: dict[str, int] = {}
+        self._channels: dict[tuple[str, str], _Channel] = {}
+        self.message_count = 0
+        self.payload_bytes = 0
+        self.dropped = 0
+
+    def __enter__(self) -> Recorder:
+        self.open()
+        return self
+
+    def __exit__(
+        self, exc_type: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
+    ) -> None:
+        self.close()  # also after an error: what was recorded stays readable
+
+    def open(self) -> None:
+        """Create the file and write the header and the initial metadata."""
+        if self._writer is not None or self._closed:
+            raise RecordingError(f"recorder for {self._path} was already opened")
+        try:
+            self._file = open(self._path, "wb")  # noqa: SIM115 - closed in close()
+        except OSError as exc:
+            raise RecordingError(f"cannot create recording {self._path}: {exc.strerror or exc}") from None
+        self._writer = Writer(self._file, chunk_size=self._chunk_size, compression=CompressionType.ZSTD)
+        self._writer.start(profile="ros1", library=f"rosgrade {__version__}")
+        for name, values in self._initial_metadata.items():
+            self._writer.add_metadata(name, values)
+
+    def _open_writer(self) -> Writer:
+        if self._writer is None:
+            state = "closed" if self._closed else "not open (use it as a context manager)"
+            raise RecordingError(f"recorder for {self._path} is {state}")
+        return self._writer
+
+    def write(
+        self,
+        topic: str,
+        type_name: str,
+        payload: bytes | bytearray | memoryview,
+        t_ns: int,
+        callerid: str,
+        latching: bool = False,
+    ) -> bool:
+        """Record one message at sim time ``t_ns``; False when the size cap dropped it.
+
+        The payload is not re-validated here: the grader decodes untrusted bytes once, on receipt.
+        A channel keeps the latching flag of its first message.
+        """
+        writer = self._open_writer()
+        if not isinstance(t_ns, int) or t_ns < 0:
+            raise RecordingError(f"message time must be a non-negative integer of nanoseconds, not {t_ns!r}")
+        if not isinstance(payload, (bytes, bytearray, memoryview)):
+            raise RecordingError(f"payload for {topic} must be bytes, not {type(payload).__name__}")
+        if self._max_bytes is not None and self.payload_bytes + len(payload) > self._max_bytes:
+            self.dropped += 1
+            return False
+        channel = self._channels.get((topic, callerid))
+        if channel is None:
+            channel = self._channels[(topic, callerid)] = self._register(writer, topic, type_name, callerid, latching)
+        elif channel.type_name != type_name and ros1_type_name(type_name) != channel.type_name:
+            raise RecordingError(f"{callerid} wrote {type_name} on {topic}, which it recorded as {channel.type_name}")
+        channel.sequence += 1
+        writer.add_message(
+            channel_id=channel.id, log_time=t_ns, publish_time=t_ns, sequence=channel.sequence, data=bytes(payload)
+        )
+        self.message_count += 1
+        self.payload_bytes += len(payload)
+        return True
+
+    def _register(self, writer: Writer, topic: str, type_name: str, callerid: str, latching: bool) -> _Channel:
+        if not topic.startswith("/"):
+            raise RecordingError(f"topic {topic!r} is not a global name")
+        name = ros1_type_name(type_name)
+        schema_id = self._schemas.get(name)
+        if schema_id is None:
+            definition = self._catalog.definition(name)
+            schema_id = self._schemas[name] = writer.register_schema(
+                name=name, encoding="ros1msg", data=definition.encode()
+            )
+        channel_id = writer.register_channel(
+            topic=topic,
+            message_encoding="ros1",
+            schema_id=schema_id,
+            metadata={
+                "callerid": callerid,
+                "md5sum": self._catalog.md5sum(name),
+                "latching": "true" if latching else "false",
+            },
+        )
+        return _Channel(channel_id, name)
+
+    def add_metadata(self, name: str, values: Mapping[str, object]) -> None:
+        """Add a metadata record (e.g. ``rosgrade.run`` with the exit status at the end of a run)."""
+        self._open_writer().add_metadata(name, metadata_strings(name, values))
+
+    def close(self) -> None:
+        """Write the summary and close the file; closing twice is harmless."""
+        if self._writer is None:
+            return
+        writer, self._writer, self._closed = self._writer, None, True
+        try:
+            if self.dropped:
+                note = {"max_bytes": self._max_bytes, "dropped": self.dropped}
+                writer.add_metadata(CAP_METADATA, metadata_strings(CAP_METADATA, note))
+            writer.finish()
+        finally:
+            assert self._file is not None
+            self._file.close()
