@@ -38,6 +38,7 @@ class Endpoint:
     latch: bool
     registered_ns: int
     count: int = 0
+    closed: bool = False
     dropped_before_connect: int = 0
     last_unconnected: bytes | None = None
 
@@ -165,8 +166,8 @@ class NodeLink:
         if kind == ch.PUBLISH:
             ident, data = ch.split_id_bytes(payload)
             endpoint = st.publishers.get(ident)
-            if endpoint is None:
-                raise ProtocolViolation(f"PUBLISH on unknown publisher handle {ident}")
+            if endpoint is None or endpoint.closed:
+                raise ProtocolViolation(f"PUBLISH on unknown or closed publisher handle {ident}")
             try:
                 self._catalog.decode(endpoint.type, data)
             except RecordingError as exc:
@@ -191,9 +192,11 @@ class NodeLink:
             (st.publishers if kind == ch.ADVERTISE else st.subscribers)[endpoint.ident] = endpoint
             return endpoint if kind == ch.SUBSCRIBE else None
         if kind == ch.UNREGISTER:
+            # Closed endpoints are kept (marked) so the run's diagnostics still count what they carried.
             ident = _field(obj, "id", int)
-            st.publishers.pop(ident, None)
-            st.subscribers.pop(ident, None)
+            for endpoint in (st.publishers.get(ident), st.subscribers.get(ident)):
+                if endpoint is not None:
+                    endpoint.closed = True
             return None
         if kind == ch.INIT:
             st.name = _field(obj, "name", str)[:256]

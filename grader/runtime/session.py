@@ -16,7 +16,7 @@ import mujoco
 
 from grader import __version__
 from grader.nodelib import rosgrade_channel as ch
-from grader.recording import (MessageCatalog, Recorder, decode_twist, ground_truth_bytes, log_bytes,
+from grader.recording import (Recorder, default_catalog, decode_twist, ground_truth_bytes, log_bytes,
                               odometry_bytes, string_bytes, tf_bytes, twist_bytes)
 from grader.runtime.diagnostics import diagnose
 from grader.runtime.node_link import (Endpoint, LogLine, NodeExited, NodeLink, NodeSilent, OutputLine,
@@ -74,7 +74,7 @@ class Session:
         self.spec = spec
         self.recording_path = recording
         self.log_path = log
-        self.catalog = MessageCatalog()
+        self.catalog = default_catalog()
         self.world = World(spec.scenario)
         self.start_ns = self.world.time_ns
         self.end_ns = spec.scenario.end_ns
@@ -263,7 +263,8 @@ class Session:
         for other in self.nodes:
             if other.alive:
                 for sub in other.link.state.subscribers.values():
-                    if sub.topic == endpoint.topic and sub.type == endpoint.type and self._connected(other, sub, t):
+                    if (sub.topic == endpoint.topic and sub.type == endpoint.type and not sub.closed
+                            and self._connected(other, sub, t)):
                         other.deliveries.append((sub.ident, data))
                         sub.count += 1
 
@@ -299,7 +300,7 @@ class Session:
     def _deliver(self, topic: str, type_name: str, data: bytes, t: int, alive: list[_Node]) -> None:
         for node in alive:
             for sub in node.link.state.subscribers.values():
-                if sub.topic == topic and sub.type == type_name and self._connected(node, sub, t):
+                if sub.topic == topic and sub.type == type_name and not sub.closed and self._connected(node, sub, t):
                     node.deliveries.append((sub.ident, data))
                     sub.count += 1
 

@@ -1,0 +1,1 @@
+"""The rosgraph_msgs ROS 1 package (messages built from rosgrade's shared definitions)."""

@@ -1,0 +1,1 @@
+"""The sensor_msgs ROS 1 package (messages built from rosgrade's shared definitions)."""
