@@ -75,8 +75,8 @@ class Session:
         self.recording_path = recording
         self.log_path = log
         self.catalog = default_catalog()
-        self.world = World(spec.scenario)
-        self.start_ns = self.world.time_ns
+        self.world: World | None = None  # built after the node processes start, while they import
+        self.start_ns = spec.scenario.start_ns
         self.end_ns = spec.scenario.end_ns
         self.shutdown_ns = spec.scenario.shutdown_ns
         self.shutdown_sent = False
@@ -92,12 +92,20 @@ class Session:
         wall0 = time.monotonic()
         self.recording_path.parent.mkdir(parents=True, exist_ok=True)
         workroot = Path(tempfile.mkdtemp(prefix="rosgrade-node-"))
+        try:
+            for index, node_spec in enumerate(self.spec.nodes):
+                self._spawn(node_spec, workroot / f"node{index}")
+            self.world = World(self.spec.scenario)
+        except BaseException:
+            for node in self.nodes:
+                node.process.close()
+            raise
         with Recorder(self.recording_path, metadata={"rosgrade": self._world_metadata()}) as rec, \
                 open(self.log_path, "w", encoding="utf-8") as log_file:
             self._recorder, self._log_file = rec, log_file
             try:
-                for index, node_spec in enumerate(self.spec.nodes):
-                    self._start(node_spec, workroot / f"node{index}")
+                for node in list(self.nodes):
+                    self._handshake(node)
                 self._loop(wall0)
             finally:
                 for node in self.nodes:
@@ -116,18 +124,18 @@ class Session:
         return result
 
     # -- starting and stopping nodes ---------------------------------------------------------------------------
-    def _start(self, node_spec: NodeSpec, workdir: Path) -> None:
-        outcome = NodeOutcome(script=node_spec.script.name)
+    def _spawn(self, node_spec: NodeSpec, workdir: Path) -> None:
         raw = self.log_path.with_suffix(f".raw{len(self.nodes)}.log")
         try:
             process = NodeProcess(node_spec, workdir, raw, self.spec.limits)
         except ProcessError as exc:
-            outcome.status, outcome.message = "failed_to_start", str(exc)
             raise RunError(str(exc)) from None
         link = NodeLink(process.read_fd, process.write_fd, self.catalog, self.spec.limits.silent_wall_s,
                         self.spec.limits.output_bytes)
-        node = _Node(node_spec, process, link, outcome)
-        self.nodes.append(node)
+        self.nodes.append(_Node(node_spec, process, link, NodeOutcome(script=node_spec.script.name)))
+
+    def _handshake(self, node: _Node) -> None:
+        link, node_spec = node.link, node.spec
         t = self.world.time_ns
         try:
             link.handshake({"t_ns": t, "params": {"/use_sim_time": True, **node_spec.params},

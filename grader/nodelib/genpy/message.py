@@ -5,6 +5,7 @@ import codecs
 import logging
 import re
 import struct
+import sys
 
 from .rostime import Duration, Time, TVal
 
@@ -15,17 +16,24 @@ _INT_WIDTHS = {"byte": 8, "char": 8, "int8": 8, "uint8": 8, "int16": 16, "uint16
 _UNSIGNED = {"char", "uint8", "uint16", "uint32", "uint64"}
 
 
-def _float_types() -> tuple:
-    """The exact types genpy's check accepts for float fields (numpy's when numpy is importable)."""
-    try:
-        import numpy as np
-    except ImportError:
-        return (float, int)
-    return (float, int, np.float32, np.float64, np.int8, np.int16, np.int32, np.int64,
-            np.uint8, np.uint16, np.uint32, np.uint64)
+_PLAIN_FLOAT_TYPES = (float, int)
+_numpy_float_types: tuple = ()
 
 
-_valid_float_types = _float_types()
+def _valid_float_types() -> tuple:
+    """The exact types genpy's check accepts for float fields.
+
+    numpy is not imported here: it would add ~0.1 s to every node's start-up, and a value can only be a numpy
+    type if the node imported numpy itself, so its types are looked up once numpy is in sys.modules.
+    """
+    global _numpy_float_types
+    np = sys.modules.get("numpy")
+    if np is None:
+        return _PLAIN_FLOAT_TYPES
+    if not _numpy_float_types:
+        _numpy_float_types = (float, int, np.float32, np.float64, np.int8, np.int16, np.int32, np.int64,
+                              np.uint8, np.uint16, np.uint32, np.uint64)
+    return _numpy_float_types
 
 
 class MessageException(Exception):
@@ -71,7 +79,7 @@ def isstring(value) -> bool:
 def check_type(field_name: str, field_type: str, field_val) -> None:
     """Raise SerializationError when field_val cannot be written as field_type (genpy's rules and texts)."""
     if field_type in ("float32", "float64"):
-        if type(field_val) not in _valid_float_types:
+        if type(field_val) not in _valid_float_types():
             raise SerializationError("field %s must be float type" % field_name)
     elif field_type in _INT_WIDTHS:
         unsigned = field_type in _UNSIGNED
