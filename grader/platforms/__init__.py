@@ -1,0 +1,2 @@
+"""Outputs for grading platforms and CI: Gradescope, GitHub Classroom/Actions, PrairieLearn and JUnit XML."""
+from __future__ import annotations

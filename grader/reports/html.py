@@ -1,0 +1,82 @@
+"""Self-contained HTML report: one file with inline CSS and plots as base64 PNG, to open or mail as is."""
+from __future__ import annotations
+
+import base64
+from collections.abc import Sequence
+from html import escape
+
+from grader.report import SubmissionReport, TaskReport
+from grader.reports.plots import Plot
+from grader.reports.text import fmt_points, foxglove_help, measured_text, percent, task_status_text
+
+_CSS = """
+body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:60rem;margin:2rem auto;padding:0 1rem;color:#222}
+h1{font-size:1.5rem}h2{font-size:1.2rem;margin-top:2rem;border-bottom:1px solid #ddd;padding-bottom:.2rem}
+table{border-collapse:collapse;width:100%;margin:.5rem 0}th,td{border:1px solid #ddd;padding:.35rem .5rem;text-align:left;vertical-align:top}
+th{background:#f4f4f4}.pass{color:#176f2c}.fail{color:#b3261e}.score{font-size:1.2rem;font-weight:600}
+.warn{background:#fff4e5;border-left:4px solid #f0a020;padding:.5rem .75rem}figure{margin:1rem 0}
+figure img{max-width:100%;border:1px solid #eee}figcaption{font-size:.85rem;color:#555}code{background:#f4f4f4;padding:0 .2rem}
+"""
+
+
+def data_uri(png: bytes) -> str:
+    """A PNG as a data: URI, so the page needs no other file."""
+    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
+
+
+def _task_html(task: TaskReport, plots: Sequence[Plot]) -> list[str]:
+    parts = [f"<h2>{escape(task.title or task.id)} <code>{escape(task.id)}</code>: {fmt_points(task.score, task.max_score)}</h2>"]
+    status = task_status_text(task)
+    if status:
+        parts.append(f'<p class="warn">{escape(status)}</p>')
+    if task.criteria:
+        parts.append("<table><tr><th></th><th>Criterion</th><th>Points</th><th>Measured</th><th>Feedback</th></tr>")
+        for c in task.criteria:
+            css, sign = ("pass", "✔") if c.passed else ("fail", "✘")
+            parts.append(
+                f'<tr><td class="{css}">{sign}</td><td>{escape(c.title or c.id)}</td>'
+                f"<td>{fmt_points(c.score, c.max_score)}</td><td>{escape(measured_text(c.measured))}</td>"
+                f"<td>{escape(c.feedback)}</td></tr>"
+            )
+        parts.append("</table>")
+    if task.diagnostics:
+        parts.append("<p>What rosgrade noticed while running your node:</p><ul>")
+        parts += [f"<li>{escape(d)}</li>" for d in task.diagnostics]
+        parts.append("</ul>")
+    for plot in (p for p in plots if p.task == task.id):
+        parts.append(
+            f'<figure><img alt="{escape(plot.title)}" src="{data_uri(plot.png)}">'
+            f"<figcaption>{escape(plot.title)}</figcaption></figure>"
+        )
+    if task.recordings:
+        parts.append("<p>Recordings: " + ", ".join(f"<code>{escape(r)}</code>" for r in task.recordings) + "</p>")
+    return parts
+
+
+def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Sequence[str] = ()) -> str:
+    """The whole report as one HTML page."""
+    title = f"rosgrade report: {report.submission}"
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f"<title>{escape(title)}</title><style>{_CSS}</style></head><body>",
+        f"<h1>{escape(title)}</h1>",
+        f'<p class="score">Score: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)</p>',
+        "<table><tr><th>Task</th><th>Status</th><th>Points</th></tr>",
+    ]
+    parts += [
+        f"<tr><td>{escape(t.title or t.id)}</td><td>{t.status}</td><td>{fmt_points(t.score, t.max_score)}</td></tr>"
+        for t in report.tasks
+    ]
+    parts.append("</table>")
+    for task in report.tasks:
+        parts += _task_html(task, plots)
+    if notes:
+        parts.append("<h2>Notes</h2><ul>" + "".join(f"<li>{escape(n)}</li>" for n in notes) + "</ul>")
+    recordings = [r for t in report.tasks for r in t.recordings]
+    if recordings:
+        parts.append("<h2>Looking at a recording</h2><ul>")
+        parts += [f"<li>{escape(line)}</li>" for line in foxglove_help(recordings[0])]
+        parts.append("</ul>")
+    parts.append(f"<p><small>rosgrade {escape(report.rosgrade_version)}</small></p></body></html>")
+    return "\n".join(parts) + "\n"

@@ -1,0 +1,230 @@
+"""Plots that show a beginner what their robot did: path against the ideal shape, commands against limits, printed pose."""
+from __future__ import annotations
+
+import io
+import json
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from grader.report import SubmissionReport
+
+IDEAL_RADIUS_M = 0.5
+SQUARE_SIDE_M = 1.0
+# Course limits from the robots' teleop nodes (linear m/s, angular rad/s); unknown robots get no limit lines.
+ROBOT_LIMITS = {
+    "turtlebot3_burger": (0.22, 2.84),
+    "turtlebot3_waffle": (0.26, 1.82),
+    "turtlebot3_waffle_pi": (0.26, 1.82),
+}
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_LABELLED = {axis: re.compile(rf"\b{axis}\s*[=:]\s*({_NUMBER})", re.IGNORECASE) for axis in ("x", "y")}
+
+
+@dataclass(frozen=True)
+class Plot:
+    """One rendered figure of one scenario of one task."""
+
+    task: str
+    scenario: str
+    name: str
+    title: str
+    png: bytes
+
+    @property
+    def filename(self) -> str:
+        """File name of the PNG inside the report's plots folder."""
+        return f"{self.task}-{self.scenario}-{self.name}.png"
+
+
+def shape_for(task_id: str) -> str | None:
+    """Which ideal figure a task's path is compared to, judged from the task id."""
+    if "circle" in task_id:
+        return "circle"
+    if "square" in task_id:
+        return "square"
+    if "odom" in task_id and ("sub" in task_id or "print" in task_id):
+        return "printed"
+    return None
+
+
+def report_plots(report: SubmissionReport, dpi: int = 90) -> tuple[list[Plot], list[str]]:
+    """Plots for every recording of a report, and a note for each recording that could not be read."""
+    plots: list[Plot] = []
+    notes: list[str] = []
+    if not any(task.recordings for task in report.tasks):
+        return plots, notes
+    from grader.recording import Recording, RecordingError
+
+    for task in report.tasks:
+        for path in task.recordings:
+            try:
+                recording = Recording.open(Path(path))
+                plots.extend(task_plots(task.id, Path(path).stem, recording, dpi=dpi))
+            except RecordingError as exc:
+                notes.append(f"{task.id}: could not plot {Path(path).name}: {exc}")
+    return plots, notes
+
+
+def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = 90) -> list[Plot]:
+    """The figures for one recording: path, commands, and printed pose for printing tasks."""
+    plots = []
+    kind = shape_for(task_id)
+    truth = recording.ground_truth()
+    odom = recording.odometry()
+    path = truth if truth is not None and len(truth.t) else odom
+    if path is not None and len(path.t):
+        figure = _path_figure(path, kind, has_truth=path is truth)
+        plots.append(Plot(task_id, scenario, "path", f"{task_id} ({scenario}): driven path", _png(figure, dpi)))
+    commands = recording.commands()
+    if commands is not None and len(commands.t):
+        metadata = recording.metadata or {}
+        figure = _command_figure(commands, _limits(metadata), _shutdown_s(metadata))
+        plots.append(Plot(task_id, scenario, "commands", f"{task_id} ({scenario}): velocity commands", _png(figure, dpi)))
+    if kind == "printed" and odom is not None and len(odom.t):
+        printed = printed_positions(recording.output_lines())
+        if len(printed):
+            figure = _printed_figure(printed, odom)
+            plots.append(Plot(task_id, scenario, "printed", f"{task_id} ({scenario}): printed vs true pose", _png(figure, dpi)))
+    return plots
+
+
+def printed_positions(lines: list[tuple[float, str, str]]) -> np.ndarray:
+    """(t, x, y) rows parsed from printed lines: `x=.. y=..` labels, else lines holding exactly 2 or 3 numbers."""
+    rows = []
+    for t, _stream, text in lines:
+        labelled = [_LABELLED[axis].search(text) for axis in ("x", "y")]
+        if all(labelled):
+            rows.append((t, float(labelled[0].group(1)), float(labelled[1].group(1))))
+            continue
+        numbers = re.findall(_NUMBER, text)
+        if len(numbers) in (2, 3):
+            rows.append((t, float(numbers[0]), float(numbers[1])))
+    return np.array(rows, dtype=float).reshape(-1, 3)
+
+
+def fit_circle_centre(x: np.ndarray, y: np.ndarray) -> tuple[float, float] | None:
+    """Least-squares (Kåsa) circle centre through the points, or None when they are (nearly) on a line."""
+    if len(x) < 3:
+        return None
+    a = np.column_stack([x, y, np.ones_like(x)])
+    b = x**2 + y**2
+    solution, _, rank, _ = np.linalg.lstsq(a, b, rcond=None)
+    if rank < 3:
+        return None
+    cx, cy = solution[0] / 2, solution[1] / 2
+    if not np.isfinite([cx, cy]).all() or np.hypot(cx - x.mean(), cy - y.mean()) > 100:
+        return None
+    return float(cx), float(cy)
+
+
+def _turn_sign(yaw: np.ndarray) -> float:
+    """+1 when the robot turned left (counter-clockwise) overall, -1 when right."""
+    turned = np.unwrap(yaw)[-1] - yaw[0]
+    return -1.0 if turned < 0 else 1.0
+
+
+def _ideal_outline(kind: str | None, path: Any) -> tuple[np.ndarray, np.ndarray, str] | None:
+    """The ideal shape's outline (x, y, label) placed from the start pose or the fitted centre."""
+    x0, y0, yaw0 = float(path.x[0]), float(path.y[0]), float(path.yaw[0])
+    sign = _turn_sign(np.asarray(path.yaw))
+    heading = np.array([np.cos(yaw0), np.sin(yaw0)])
+    left = sign * np.array([-np.sin(yaw0), np.cos(yaw0)])
+    if kind == "circle":
+        centre = fit_circle_centre(np.asarray(path.x), np.asarray(path.y))
+        label = "ideal circle (r = 0.5 m) around the fitted centre"
+        if centre is None:
+            centre = tuple(np.array([x0, y0]) + IDEAL_RADIUS_M * left)
+            label = "ideal circle (r = 0.5 m) from the start pose"
+        angles = np.linspace(0, 2 * np.pi, 200)
+        return centre[0] + IDEAL_RADIUS_M * np.cos(angles), centre[1] + IDEAL_RADIUS_M * np.sin(angles), label
+    if kind == "square":
+        start = np.array([x0, y0])
+        corners = [start, start + heading, start + heading + left, start + left, start]
+        xs, ys = zip(*(SQUARE_SIDE_M * (c - start) + start for c in corners))
+        return np.array(xs), np.array(ys), "ideal 1 × 1 m square from the start pose"
+    return None
+
+
+def _path_figure(path: Any, kind: str | None, has_truth: bool) -> Figure:
+    figure = Figure(figsize=(5.2, 5.0))
+    axes = figure.add_subplot()
+    source = "true path (simulator)" if has_truth else "path from /odom"
+    axes.plot(path.x, path.y, color="tab:blue", lw=1.8, label=source)
+    outline = _ideal_outline(kind, path)
+    if outline is not None:  # drawn over the path so it stays visible where the two coincide
+        axes.plot(outline[0], outline[1], "--", color="tab:green", lw=1.5, label=outline[2])
+    axes.plot(path.x[-1], path.y[-1], "s", color="tab:red", ms=7, label="end")
+    axes.plot(path.x[0], path.y[0], "o", mfc="none", mec="tab:green", mew=2, ms=12, label="start")
+    axes.set_aspect("equal", adjustable="datalim")
+    axes.set_xlabel("x [m]")
+    axes.set_ylabel("y [m]")
+    axes.grid(True, alpha=0.3)
+    axes.legend(loc="best", fontsize=8)
+    figure.tight_layout()
+    return figure
+
+
+def _command_figure(commands: Any, limits: tuple[float, float] | None, shutdown_s: float | None) -> Figure:
+    figure = Figure(figsize=(7.0, 4.2))
+    linear_axes, angular_axes = figure.subplots(2, 1, sharex=True)
+    series = (
+        (linear_axes, np.asarray(commands.linear)[:, 0], "linear.x [m/s]", 0),
+        (angular_axes, np.asarray(commands.angular)[:, 2], "angular.z [rad/s]", 1),
+    )
+    for axes, values, label, limit_index in series:
+        axes.step(commands.t, values, where="post", color="tab:blue", lw=1.5, label="commanded")
+        if limits is not None:
+            limit = limits[limit_index]
+            axes.axhline(limit, color="tab:red", ls="--", lw=1, label=f"limit ±{limit:g}")
+            axes.axhline(-limit, color="tab:red", ls="--", lw=1)
+        if shutdown_s is not None:
+            axes.axvline(shutdown_s, color="tab:purple", ls=":", lw=1.5, label="Ctrl+C (shutdown)")
+        axes.set_ylabel(label)
+        axes.grid(True, alpha=0.3)
+    linear_axes.legend(loc="best", fontsize=8)
+    angular_axes.set_xlabel("time [s]")
+    figure.tight_layout()
+    return figure
+
+
+def _printed_figure(printed: np.ndarray, odom: Any) -> Figure:
+    figure = Figure(figsize=(7.0, 4.2))
+    axes_pair = figure.subplots(2, 1, sharex=True)
+    for axes, values, column, label in zip(axes_pair, (odom.x, odom.y), (1, 2), ("x [m]", "y [m]")):
+        axes.plot(odom.t, values, color="tab:blue", lw=1.5, label="pose on /odom")
+        axes.plot(printed[:, 0], printed[:, column], "o", color="tab:orange", ms=4, label="your printed value")
+        axes.set_ylabel(label)
+        axes.grid(True, alpha=0.3)
+    axes_pair[0].legend(loc="best", fontsize=8)
+    axes_pair[1].set_xlabel("time [s]")
+    figure.tight_layout()
+    return figure
+
+
+def _png(figure: Figure, dpi: int) -> bytes:
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format="png", dpi=dpi)
+    return buffer.getvalue()
+
+
+def _record(metadata: dict[str, Any], name: str) -> dict[str, Any]:
+    """A metadata record as a dict (MCAP metadata values are strings; JSON ones are decoded)."""
+    record = metadata.get(name) or {}
+    return record if isinstance(record, dict) else {}
+
+
+def _limits(metadata: dict[str, Any]) -> tuple[float, float] | None:
+    return ROBOT_LIMITS.get(str(_record(metadata, "rosgrade").get("robot", "")))
+
+
+def _shutdown_s(metadata: dict[str, Any]) -> float | None:
+    value = _record(metadata, "rosgrade.run").get("shutdown_requested_s")
+    try:
+        return None if value in (None, "", "null") else float(json.loads(value) if isinstance(value, str) else value)
+    except (TypeError, ValueError):
+        return None

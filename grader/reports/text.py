@@ -1,0 +1,85 @@
+"""Small text formatters shared by the console table, Markdown, HTML and platform outputs, so they all agree."""
+from __future__ import annotations
+
+from grader.report import CriterionResult, SubmissionReport, TaskReport
+
+EXPECTED_PREFIX = "expected_"
+# Measured names end in their unit (radius_m, max_linear_mps); shown as "radius 0.497 m".
+UNIT_SUFFIXES = {"_mps": "m/s", "_radps": "rad/s", "_deg": "°", "_rad": "rad", "_hz": "Hz", "_pct": "%", "_m": "m", "_s": "s"}
+
+_STATUS_TEXT = {
+    "error": "Your node stopped with an error, so this task could not be fully graded.",
+    "timeout": "Your node did not finish within the time limit.",
+    "not_found": "No script for this task was found in your submission.",
+}
+
+
+def fmt_number(value: float | int | str | bool | None) -> str:
+    """A measured value in a short, readable form (0.4971 → 0.497, True → yes)."""
+    if value is None:
+        return "–"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if value == 0 or 1e-3 <= abs(value) < 1e6:
+            return f"{value:.3f}".rstrip("0").rstrip(".") or "0"
+        return f"{value:.3g}"
+    return str(value)
+
+
+def fmt_points(score: float, max_score: float) -> str:
+    """Points as 'score / max'."""
+    return f"{fmt_number(float(score))} / {fmt_number(float(max_score))}"
+
+
+def measured_text(measured: dict[str, float | int | str | bool | None]) -> str:
+    """Measured values, each paired with its `expected_<name>` entry when the rubric gave one."""
+    parts = []
+    for name, value in measured.items():
+        if name.startswith(EXPECTED_PREFIX) and name[len(EXPECTED_PREFIX):] in measured:
+            continue
+        label, unit = split_unit(name)
+        text = f"{label} {fmt_number(value)}{unit}"
+        expected = measured.get(EXPECTED_PREFIX + name)
+        if expected is not None:
+            text += f" (expected {fmt_number(expected)}{unit})"
+        parts.append(text)
+    return ", ".join(parts)
+
+
+def split_unit(name: str) -> tuple[str, str]:
+    """A measured name as (readable label, ' unit'), e.g. 'max_linear_mps' → ('max linear', ' m/s')."""
+    for suffix, unit in UNIT_SUFFIXES.items():
+        if name.endswith(suffix) and len(name) > len(suffix):
+            return name[: -len(suffix)].replace("_", " "), ("" if unit == "°" else " ") + unit
+    return name.replace("_", " "), ""
+
+
+def is_public(criterion: CriterionResult) -> bool:
+    """Whether a student may see this criterion's feedback and measurements now."""
+    return criterion.visibility == "visible"
+
+
+def task_status_text(task: TaskReport) -> str:
+    """One beginner-friendly line on why a task was not graded normally ('' when it was)."""
+    if task.status == "graded":
+        return ""
+    base = _STATUS_TEXT[task.status]
+    return f"{base} {task.message}".strip()
+
+
+def percent(report: SubmissionReport) -> float:
+    """The submission's score in percent (0 when nothing could be scored)."""
+    return 100.0 * report.score / report.max_score if report.max_score > 0 else 0.0
+
+
+def foxglove_help(recording: str) -> list[str]:
+    """How to look at a recording in Foxglove, step by step."""
+    return [
+        f"Open a recording in Foxglove: go to https://app.foxglove.dev (or the desktop app) → "
+        f"Open local file → {recording}",
+        "Add a Plot panel with paths such as /odom.pose.pose.position.x, /odom.pose.pose.position.y "
+        "and /cmd_vel.linear.x; a Raw Messages panel on /rosout shows your node's log.",
+    ]

@@ -1,0 +1,114 @@
+"""`rosgrade tasks`, `score`, `bench` and `gradescope-package`."""
+from __future__ import annotations
+
+import io
+import json
+import tarfile
+import types
+import zipfile
+from pathlib import Path
+
+import pytest
+
+from grader.cli import main
+
+from . import fakes
+from .validators import validate_gradescope
+
+
+def test_tasks_lists_rubrics_with_points_and_criteria(grading, capsys):
+    assert main(["tasks"]) == 0
+    out = capsys.readouterr().out
+    assert "move_circle" in out and "radius: Circle radius (4)" in out and "[hidden]" in out
+
+
+def test_tasks_json(grading, capsys):
+    assert main(["tasks", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data[0]["id"] == "move_circle" and data[0]["criteria"][2]["visibility"] == "hidden"
+
+
+def test_score_uses_the_scenario_from_metadata(grading, capsys):
+    Path("run1.mcap").write_bytes(b"MCAP")
+    assert main(["score", "run1.mcap", "--task", "move_circle", "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["tasks"][0]["diagnostics"] == ["scenarios: nominal"] and report["score"] == 7
+
+
+def test_score_ros1_bag_is_nominal_and_says_it_has_no_ground_truth(grading, capsys):
+    Path("old.bag").write_bytes(b"#ROSBAG")
+    assert main(["score", "old.bag", "--task", "move_circle"]) == 0
+    out, err = capsys.readouterr()
+    assert "no ground truth" in err and "Circle radius" in out
+
+
+def test_score_unknown_task_is_exit_2(grading, capsys):
+    Path("run1.mcap").write_bytes(b"MCAP")
+    assert main(["score", "run1.mcap", "--task", "nope"]) == 2
+
+
+def test_score_unreadable_recording_is_exit_2_with_one_line(grading, capsys):
+    Path("bad.mcap").write_bytes(b"garbage")
+    assert main(["score", "bad.mcap", "--task", "move_circle"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "not an MCAP or bag file" in err
+
+
+def test_score_two_recordings_of_one_scenario_is_exit_2(grading, capsys):
+    Path("a.mcap").write_bytes(b"MCAP")
+    Path("b.mcap").write_bytes(b"MCAP")
+    assert main(["score", "a.mcap", "b.mcap", "--task", "move_circle"]) == 2
+
+
+def bench_module() -> types.ModuleType:
+    module = types.ModuleType("sim.bench")
+    module.physics_benchmark = lambda robot="turtlebot3_waffle", sim_seconds=60.0: {
+        "robot": robot, "sim_seconds": sim_seconds, "real_time_factor": 184.2, "raw_steps_per_s": 185000.0}
+    return module
+
+
+def test_bench_prints_physics_figures(grading, monkeypatch, capsys):
+    fakes.install(monkeypatch, "sim.bench", bench_module())
+    assert main(["bench", "--seconds", "5"]) == 0
+    assert "real_time_factor" in capsys.readouterr().out
+
+
+def test_bench_times_reference_solutions(grading, monkeypatch, tmp_path, capsys):
+    fakes.install(monkeypatch, "sim.bench", bench_module())
+    (tmp_path / "refs").mkdir()
+    (tmp_path / "refs" / "move_circle.py").write_text("import rospy\n")
+    assert main(["bench", "--reference", str(tmp_path / "refs"), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["physics"]["real_time_factor"] == 184.2
+    assert data["reference"][0]["solution"] == "move_circle.py" and data["reference"][0]["wall_s"] >= 0
+
+
+def test_gradescope_package_has_setup_run_autograder_and_sdist(grading, capsys):
+    assert main(["gradescope-package", "--task", "move_circle", "--task", "move_square", "--out", "ag.zip"]) == 0
+    with zipfile.ZipFile("ag.zip") as archive:
+        names = archive.namelist()
+        assert {"setup.sh", "run_autograder", "README.md"} <= set(names)
+        run = archive.read("run_autograder").decode()
+        setup = archive.read("setup.sh").decode()
+        assert run.startswith("#!") and setup.startswith("#!")
+        assert archive.getinfo("run_autograder").external_attr >> 16 & 0o111
+        assert "rosgrade check" in run and "--task move_circle --task move_square" in run and "--gradescope" in run
+        assert "/autograder/results/results.json" in run
+        fallback = run.split("<<'JSON'\n")[1].split("\nJSON\n")[0]
+        validate_gradescope(fallback)
+        sdist = next(n for n in names if n.endswith(".tar.gz"))
+        assert f"pip install /autograder/source/{sdist}" in setup
+        with tarfile.open(fileobj=io.BytesIO(archive.read(sdist))) as tar:
+            members = tar.getnames()
+    assert "rosgrade-0.1.0/pyproject.toml" in members and "rosgrade-0.1.0/grader/cli.py" in members
+    assert not any("__pycache__" in m for m in members)
+
+
+def test_gradescope_package_rejects_unknown_tasks(grading, capsys):
+    assert main(["gradescope-package", "--task", "nope", "--out", "ag.zip"]) == 2
+    assert not Path("ag.zip").exists()
+
+
+def test_gradescope_package_needs_a_task(grading):
+    with pytest.raises(SystemExit):
+        main(["gradescope-package", "--out", "ag.zip"])
