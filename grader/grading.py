@@ -86,7 +86,8 @@ def grade_task(folder: Path, rubric: Rubric, out_dir: Path, progress: Progress |
                               recordings=paths, diagnostics=findings, message=f"scenario {scenario.name}: {exc}")
         paths.append(str(mcap))
         timed_out |= any(n.status == "timeout" for n in result.nodes)
-        for note in result.diagnostics:
+        # Counts differ from scenario to scenario; the first (nominal) run's are the ones worth showing.
+        for note in result.diagnostics + (result.topics if len(paths) == 1 else []):
             if note not in run_notes:
                 run_notes.append(note)
     report = score_task(rubric, recordings)

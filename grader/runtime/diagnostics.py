@@ -29,7 +29,6 @@ def diagnose(session: Session) -> list[str]:
             notes.append(f"{label} never called rospy.init_node(): a ROS node must call it before it can publish, "
                          "subscribe or read the time.")
         for pub in state.publishers.values():
-            notes.append(f"{label} published {_count(pub.count, 'message')} on {pub.topic} ({pub.type}).")
             if pub.topic in command_topics and pub.type != "geometry_msgs/Twist":
                 notes.append(f"{pub.topic} carries geometry_msgs/Twist, but {label} published {pub.type} there: "
                              "the robot ignores it.")
@@ -53,8 +52,6 @@ def diagnose(session: Session) -> list[str]:
                 available = ", ".join(sorted(world_topics))
                 notes.append(f"{label} subscribed to {sub.topic}, which nothing publishes here (the robot publishes "
                              f"{available}).")
-            else:
-                notes.append(f"{label} received {_count(sub.count, 'message')} on {sub.topic} ({sub.type}).")
         if state.exception:
             exc = state.exception
             where = ""
@@ -70,3 +67,16 @@ def diagnose(session: Session) -> list[str]:
             notes.append(f"{label}: {node.outcome.message}.")
         notes.extend(node.outcome.findings)
     return notes
+
+
+def topic_summary(session: Session) -> list[str]:
+    """What each node published and received, with counts (the same kind of line for every run)."""
+    lines = []
+    for node in session.nodes:
+        label = node.outcome.script
+        state = node.link.state
+        lines += [f"{label} published {_count(p.count, 'message')} on {p.topic} ({p.type})."
+                  for p in state.publishers.values()]
+        lines += [f"{label} received {_count(s.count, 'message')} on {s.topic} ({s.type})."
+                  for s in state.subscribers.values()]
+    return lines

@@ -18,7 +18,7 @@ from grader import __version__
 from grader.nodelib import rosgrade_channel as ch
 from grader.recording import (Recorder, default_catalog, decode_twist, ground_truth_bytes, log_bytes,
                               odometry_bytes, string_bytes, tf_bytes, twist_bytes)
-from grader.runtime.diagnostics import diagnose
+from grader.runtime.diagnostics import diagnose, topic_summary
 from grader.runtime.node_link import (Endpoint, LogLine, NodeExited, NodeLink, NodeSilent, OutputLine,
                                       ProtocolViolation, Publication)
 from grader.runtime.process import NodeProcess, ProcessError
@@ -118,7 +118,7 @@ class Session:
                 recording=self.recording_path, log=self.log_path, started_s=self.start_ns / 1e9,
                 ended_s=self.world.time_ns / 1e9,
                 shutdown_requested_s=_s(self.shutdown_ns) if self.shutdown_sent else None,
-                nodes=[n.outcome for n in self.nodes], diagnostics=diagnostics,
+                nodes=[n.outcome for n in self.nodes], diagnostics=diagnostics, topics=topic_summary(self),
                 wall_s=time.monotonic() - wall0)
             rec.add_metadata("rosgrade.run", self._run_metadata(result))
         return result
@@ -256,7 +256,8 @@ class Session:
                                  t, callerid=node.callerid)
 
     def _connected(self, node: _Node, endpoint: Endpoint, t: int) -> bool:
-        since = max(endpoint.registered_ns, node.link.state.init_ns or t)
+        init_ns = node.link.state.init_ns
+        since = max(endpoint.registered_ns, t if init_ns is None else init_ns)
         return t >= since + CONNECT_DELAY_NS
 
     def _publication(self, node: _Node, endpoint: Endpoint, data: bytes, t: int) -> None:
@@ -338,6 +339,7 @@ class Session:
             "exit_signal": json.dumps(first.exit_signal),
             "nodes": json.dumps([asdict(n) for n in result.nodes]),
             "diagnostics": json.dumps(result.diagnostics),
+            "topics": json.dumps(result.topics),
         }
 
 

@@ -85,6 +85,7 @@ class RunResult:
     shutdown_requested_s: float | None
     nodes: list[NodeOutcome]
     diagnostics: list[str]
+    topics: list[str] = field(default_factory=list)  # what each node published and received, with counts
     wall_s: float = 0.0
 
     @property
