@@ -1,0 +1,60 @@
+"""EXCEPTION frames for uncaught exceptions (and for the ones rospy reports: callbacks, hooks), student frames only."""
+from __future__ import annotations
+
+import os
+import sys
+import threading
+import traceback
+
+import rosgrade_channel as ch
+
+from . import runtime
+
+_NODELIB_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
+_MAX_MESSAGE = 4000
+_MAX_FRAMES = 50
+
+
+def _is_student_frame(filename: str) -> bool:
+    return not (filename.startswith(_NODELIB_DIR) or filename.startswith("<frozen")
+                or os.path.basename(filename) == "runpy.py")
+
+
+def type_name(exc_type: type) -> str:
+    """``ValueError`` for builtins, ``rospy.exceptions.ROSInterruptException`` otherwise."""
+    module = exc_type.__module__
+    return exc_type.__qualname__ if module == "builtins" else f"{module}.{exc_type.__qualname__}"
+
+
+def report(exc_type: type, exc: BaseException | None, tb) -> None:
+    """Send one EXCEPTION frame describing ``exc`` (no printing: the caller prints the traceback)."""
+    if runtime.link is None:
+        return
+    frames = [{"file": f.filename, "line": f.lineno, "function": f.name, "text": f.line or ""}
+              for f in traceback.extract_tb(tb) if _is_student_frame(f.filename)]
+    runtime.link.send_json(ch.EXCEPTION, {
+        "type": type_name(exc_type),
+        "message": str(exc)[:_MAX_MESSAGE] if exc is not None else "",
+        "frames": frames[-_MAX_FRAMES:],
+    })
+
+
+def report_current() -> None:
+    """Report the exception being handled right now."""
+    report(*sys.exc_info())
+
+
+def _excepthook(exc_type, exc, tb) -> None:
+    report(exc_type, exc, tb)
+    sys.__excepthook__(exc_type, exc, tb)
+
+
+def _thread_excepthook(args) -> None:
+    if args.exc_type is not SystemExit:
+        report(args.exc_type, args.exc_value, args.exc_traceback)
+    threading.__excepthook__(args)
+
+
+def install() -> None:
+    sys.excepthook = _excepthook
+    threading.excepthook = _thread_excepthook

@@ -1,0 +1,95 @@
+"""The node's end of the grader channel: ordered, write-through frame sending and batch reading."""
+from __future__ import annotations
+
+import os
+import threading
+from dataclasses import dataclass, field
+from typing import NoReturn
+
+import rosgrade_channel as ch
+
+# OUTPUT payloads are split so that no frame comes near the grader's size cap.
+_OUTPUT_CHUNK = 64 * 1024
+
+
+@dataclass
+class Batch:
+    """What the grader sent between a WAIT and its RESUME."""
+
+    t_ns: int
+    clock_ns: int
+    deliveries: list[tuple[int, bytes]] = field(default_factory=list)
+    shutdown: str | None = None
+
+
+class Link:
+    """Frames to and from the grader. Every frame is written at once (nothing is lost if the node is killed)."""
+
+    def __init__(self, read_fd: int, write_fd: int) -> None:
+        self._reader = ch.FrameReader(read_fd, ch.GRADER_KINDS)
+        self._wfd = write_fd
+        self._lock = threading.Lock()
+
+    def send(self, frame: bytes) -> None:
+        try:
+            with self._lock:
+                ch.write_all(self._wfd, frame)
+        except OSError as exc:
+            # The grader is gone: there is nobody left to run for.
+            _fail(exc)
+
+    def send_json(self, kind: int, obj: dict) -> None:
+        self.send(ch.encode_json(kind, obj))
+
+    def send_output(self, stream: int, data: bytes) -> None:
+        for start in range(0, len(data), _OUTPUT_CHUNK):
+            self.send(ch.encode_output(stream, data[start:start + _OUTPUT_CHUNK]))
+
+    def send_message(self, kind: int, ident: int, data: bytes) -> None:
+        self.send(ch.encode_id_bytes(kind, ident, data))
+
+    def read_json(self, kind: int) -> dict:
+        """Read one frame that must be of ``kind`` and carry JSON."""
+        try:
+            return self._read_json(kind)
+        except (ch.ChannelError, OSError) as exc:
+            _fail(exc)
+
+    def read_batch(self) -> Batch:
+        """Read ADVANCE, then DELIVER* and an optional SHUTDOWN, up to RESUME."""
+        try:
+            advance = self._read_json(ch.ADVANCE)
+            batch = Batch(t_ns=_int(advance, "t_ns"), clock_ns=_int(advance, "clock_ns"))
+            while True:
+                kind, payload = self._reader.read()
+                if kind == ch.RESUME:
+                    return batch
+                if kind == ch.DELIVER:
+                    batch.deliveries.append(ch.split_id_bytes(payload))
+                elif kind == ch.SHUTDOWN:
+                    batch.shutdown = str(ch.decode_json(payload).get("reason", ""))
+                else:
+                    raise ch.ChannelError(f"unexpected {ch.KIND_NAMES.get(kind, kind)} inside a batch")
+        except (ch.ChannelError, OSError) as exc:
+            _fail(exc)
+
+    def _read_json(self, kind: int) -> dict:
+        got, payload = self._reader.read()
+        if got != kind:
+            raise ch.ChannelError(f"expected {ch.KIND_NAMES[kind]}, got {ch.KIND_NAMES.get(got, got)}")
+        return ch.decode_json(payload)
+
+
+def _fail(exc: BaseException) -> NoReturn:
+    """The grader closed the channel or broke the protocol: say why on the real stderr and end the process."""
+    try:
+        os.write(2, f"rosgrade node: channel error: {exc}\n".encode())
+    finally:
+        os._exit(1)
+
+
+def _int(obj: dict, key: str) -> int:
+    value = obj.get(key)
+    if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+        raise ch.ChannelError(f"field {key!r} must be a non-negative integer, got {value!r}")
+    return value

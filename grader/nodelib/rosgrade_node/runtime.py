@@ -1,0 +1,17 @@
+"""The node runtime's singletons, set once by ``bootstrap.start`` (None when no grader channel exists)."""
+from __future__ import annotations
+
+from .link import Link
+from .scheduler import Scheduler
+
+link: Link | None = None
+scheduler: Scheduler | None = None
+# From START: parameters (absolute names -> JSON values), namespace and the wall-clock epoch of world time 0.
+params: dict = {}
+ros_namespace: str = ""
+wall_epoch_ns: int = 0
+
+
+def wall_time() -> float:
+    """The node's wall clock (what patched ``time.time()`` returns), without charging a call."""
+    return (wall_epoch_ns + (scheduler.world_ns if scheduler else 0)) / 1e9

@@ -1,0 +1,268 @@
+"""The lockstep scheduler: one token shared by every thread that runs student code, sim-time waits, WAIT/batch exchange.
+
+Managed threads are the main thread, one callback thread per subscribed topic and rospy.Timer threads. Exactly one of
+them holds the token and runs; a blocking library call (``block``) registers a wake condition and passes the token on.
+When no thread can run, the thread that blocked last sends ``WAIT {wake_ns}`` and applies the grader's batch. After a
+batch the order is fixed: topic threads that received messages (in delivery order), then threads whose wake
+condition holds, by (deadline, time of blocking), then the main thread if only a shutdown request woke it. Student
+code therefore interleaves as a function of the grader's batches alone.
+"""
+from __future__ import annotations
+
+import itertools
+import os
+import sys
+import sysconfig
+import threading
+from collections import deque
+from collections.abc import Callable
+
+import rosgrade_channel as ch
+
+from .link import Link
+
+# Code in these directories is library code: a CPU-time tick that lands in it never yields (see on_cpu_tick).
+_LIBRARY_DIRS = tuple(
+    {os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep}
+    | {os.path.join(p, "") for key in ("stdlib", "platstdlib", "purelib", "platlib")
+       if (p := sysconfig.get_paths().get(key))})
+
+
+class SchedulerError(Exception):
+    """The grader broke the lockstep contract (time moved backwards)."""
+
+
+def _raise_keyboard_interrupt(reason: str) -> None:
+    """What a Ctrl+C does to a process that has not handed signals to rospy."""
+    raise KeyboardInterrupt
+
+
+class _Waiter:
+    """One managed thread's scheduling state."""
+
+    __slots__ = ("name", "event", "deadline_ns", "ready", "seq", "ident")
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self.event = threading.Event()
+        self.deadline_ns: int | None = None
+        self.ready: Callable[[], bool] | None = None
+        self.seq = 0
+        self.ident: int | None = None
+
+
+class Scheduler:
+    """Token passing, the sim clock as the node sees it, call charges, and the grader exchange."""
+
+    def __init__(self, link: Link, t_ns: int) -> None:
+        self.link = link
+        self.world_ns = t_ns
+        self.clock_ns = 0
+        self.charge_ns = 0
+        # Counts library calls and blocks; the CPU-time tick yields only when it has not moved.
+        self.activity = 0
+        self._tick_activity = -1
+        self.interrupt_pending: str | None = None
+        self.on_interrupt: Callable[[str], None] = _raise_keyboard_interrupt
+        self._seq = itertools.count()
+        self._main = _Waiter("MainThread")
+        self._main.ident = threading.get_ident()
+        self._holder: _Waiter | None = self._main
+        self._threads: dict[int, _Waiter] = {self._main.ident: self._main}
+        self._blocked: dict[_Waiter, None] = {}
+        self._runnable: deque[_Waiter] = deque()
+        self._sinks: dict[int, Callable[[bytes], _Waiter | None]] = {}
+        # Threads the node did not create (student threading.Thread) wait here, outside the token.
+        self._outside = threading.Condition()
+
+    # -- queries ---------------------------------------------------------------------------------------------------
+    def holds_token(self) -> bool:
+        """True when the calling thread is the managed thread that may run now."""
+        me = self._threads.get(threading.get_ident())
+        return me is not None and me is self._holder
+
+    def in_main_thread(self) -> bool:
+        return threading.get_ident() == self._main.ident
+
+    # -- non-blocking calls ----------------------------------------------------------------------------------------
+    def charge(self) -> None:
+        """Account one non-blocking library call; yield once the charge reaches a clock period (busy loops)."""
+        if not self.holds_token():
+            return
+        self.activity += 1
+        self.charge_ns += ch.CALL_QUANTUM_NS
+        if self.charge_ns >= ch.CLOCK_PERIOD_NS:
+            self.block(deadline_ns=self.world_ns + self.charge_ns)
+
+    def on_cpu_tick(self, frame) -> None:
+        """SIGVTALRM handler body: make a pure-Python busy wait in the main thread give up one clock period.
+
+        Trade-off: a loop that makes no library call (``while self.odom is None: pass``) could otherwise never let
+        the callback that ends it run. The timer counts CPU time, so *when* it fires depends on the machine; to keep
+        that out of the recording for ordinary nodes it only acts when the main thread holds the token, is executing
+        student code (not library or stdlib code) and has made no library call since the previous tick. A wait for
+        a message then still ends at a deterministic sim time (each tick advances exactly one period until the
+        message's batch); only long pure-Python computations see machine-dependent sim time.
+        """
+        if not self.holds_token() or not self.in_main_thread():
+            return
+        if self.activity != self._tick_activity:
+            self._tick_activity = self.activity
+            return
+        filename = frame.f_code.co_filename if frame is not None else "<frozen>"
+        if filename.startswith(_LIBRARY_DIRS) or filename.startswith("<frozen"):
+            return
+        self.charge_ns += ch.CLOCK_PERIOD_NS
+        self.block(deadline_ns=self.world_ns + self.charge_ns)
+        self._tick_activity = self.activity
+
+    # -- blocking ------------------------------------------------------------------------------------------------
+    def block(self, deadline_ns: int | None = None, ready: Callable[[], bool] | None = None) -> None:
+        """Give up the token until world time reaches ``deadline_ns`` or ``ready()`` holds.
+
+        The main thread also wakes for a pending interrupt (SHUTDOWN frame or signal) and runs ``on_interrupt`` here,
+        at its waiting point, holding the token; that may raise KeyboardInterrupt. Callers re-check their own
+        condition in a loop.
+        """
+        me = self._threads.get(threading.get_ident())
+        if me is None:
+            self._block_outside(deadline_ns, ready)
+            return
+        self.activity += 1
+        me.deadline_ns, me.ready = deadline_ns, ready
+        if not self._is_ready(me):
+            me.seq = next(self._seq)
+            self._blocked[me] = None
+            self._switch(me)
+        me.deadline_ns = me.ready = None
+        if me is self._main and self.interrupt_pending is not None:
+            reason, self.interrupt_pending = self.interrupt_pending, None
+            self.on_interrupt(reason)
+
+    def sleep_ns(self, ns: int) -> None:
+        """Sleep ``ns`` of world time, waking at the exact deadline (patched time.sleep); 0 only charges."""
+        if ns <= 0:
+            self.charge()
+            return
+        deadline = self.world_ns + ns
+        while self.world_ns < deadline:
+            self.block(deadline_ns=deadline)
+
+    def request_interrupt(self, reason: str, frame=None) -> None:
+        """A Ctrl+C for the main thread (a signal handler's body): run it now if the main thread is in student code,
+        otherwise at the main thread's next waiting point."""
+        filename = frame.f_code.co_filename if frame is not None else "<frozen>"
+        if self.holds_token() and self.in_main_thread() and not filename.startswith(_LIBRARY_DIRS) \
+                and not filename.startswith("<frozen"):
+            self.on_interrupt(reason)
+        else:
+            self.interrupt_pending = reason
+
+    # -- threads ---------------------------------------------------------------------------------------------------
+    def spawn(self, name: str, target: Callable[[], None], ready: Callable[[], bool] | None = None) -> _Waiter:
+        """Start a managed daemon thread. It first runs when handed the token: in FIFO order after the current
+        holder blocks, or (with ``ready``) once ``ready()`` holds."""
+        waiter = _Waiter(name)
+
+        def run() -> None:
+            waiter.event.wait()
+            waiter.event.clear()
+            try:
+                target()
+            except SystemExit:
+                pass
+            except BaseException:
+                threading.excepthook(threading.ExceptHookArgs((*sys.exc_info(), threading.current_thread())))
+            finally:
+                self._exit(waiter)
+
+        thread = threading.Thread(target=run, name=name, daemon=True)
+        waiter.seq = next(self._seq)
+        if ready is None:
+            self._runnable.append(waiter)
+        else:
+            waiter.ready = ready
+            self._blocked[waiter] = None
+        thread.start()
+        waiter.ident = thread.ident
+        self._threads[thread.ident] = waiter
+        return waiter
+
+    def add_sink(self, ident: int, sink: Callable[[bytes], _Waiter | None]) -> None:
+        """Route DELIVER frames for handle ``ident``; the sink returns the thread that will consume the message."""
+        self._sinks[ident] = sink
+
+    def remove_sink(self, ident: int) -> None:
+        self._sinks.pop(ident, None)
+
+    # -- internals -------------------------------------------------------------------------------------------------
+    def _is_ready(self, w: _Waiter) -> bool:
+        return ((w.deadline_ns is not None and self.world_ns >= w.deadline_ns)
+                or (w.ready is not None and w.ready())
+                or (w is self._main and self.interrupt_pending is not None))
+
+    def _order(self, w: _Waiter) -> tuple:
+        woken = (w.deadline_ns is not None and self.world_ns >= w.deadline_ns) or (w.ready is not None and w.ready())
+        if not woken:  # only the pending interrupt woke the main thread: it goes last
+            return (1, 0, w.seq)
+        return (0, w.deadline_ns if w.deadline_ns is not None else self.world_ns, w.seq)
+
+    def _pick(self) -> _Waiter | None:
+        if not self._runnable:
+            self._runnable.extend(sorted((w for w in self._blocked if self._is_ready(w)), key=self._order))
+        if not self._runnable:
+            return None
+        w = self._runnable.popleft()
+        self._blocked.pop(w, None)
+        return w
+
+    def _switch(self, me: _Waiter | None) -> None:
+        """Hand the token to the next runnable thread (exchanging with the grader when there is none) and, unless
+        ``me`` is exiting, wait until it comes back."""
+        nxt = self._pick()
+        while nxt is None:
+            self._exchange()
+            nxt = self._pick()
+        self._holder = nxt
+        if nxt is me:
+            return
+        nxt.event.set()
+        if me is not None:
+            me.event.wait()
+            me.event.clear()
+
+    def _exit(self, w: _Waiter) -> None:
+        self._threads.pop(w.ident, None)
+        self._blocked.pop(w, None)
+        self._switch(None)
+
+    def _exchange(self) -> None:
+        """Send WAIT with the earliest deadline, apply the grader's batch and queue the threads it wakes."""
+        deadlines = [w.deadline_ns for w in self._blocked if w.deadline_ns is not None]
+        self.link.send_json(ch.WAIT, {"wake_ns": min(deadlines) if deadlines else None})
+        batch = self.link.read_batch()
+        if batch.t_ns < self.world_ns:
+            raise SchedulerError(f"grader moved world time backwards: {batch.t_ns} < {self.world_ns}")
+        if batch.t_ns > self.world_ns:
+            self.charge_ns = 0
+        self.world_ns, self.clock_ns = batch.t_ns, batch.clock_ns
+        woken: dict[_Waiter, None] = {}
+        for ident, data in batch.deliveries:
+            sink = self._sinks.get(ident)
+            consumer = sink(data) if sink is not None else None
+            if consumer is not None:
+                woken[consumer] = None
+        if batch.shutdown is not None:
+            self.interrupt_pending = batch.shutdown
+        for w in woken:
+            if w in self._blocked and self._is_ready(w):
+                del self._blocked[w]
+                self._runnable.append(w)
+        with self._outside:
+            self._outside.notify_all()
+
+    def _block_outside(self, deadline_ns: int | None, ready: Callable[[], bool] | None) -> None:
+        """A thread the node did not create waits outside the token (not deterministic; documented limitation)."""
+        with self._outside:
+            self._outside.wait_for(lambda: (deadline_ns is not None and self.world_ns >= deadline_ns)
+                                   or (ready is not None and ready()))
