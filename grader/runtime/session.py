@@ -23,6 +23,7 @@ from grader.runtime.node_link import (Endpoint, LogLine, NodeExited, NodeLink, N
                                       ProtocolViolation, Publication)
 from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
+from grader.runtime.verdicts import exit_status
 from sim import CommandSample, GroundTruthSample, OdometrySample, TransformSample, World
 
 # Real rospy connects a new publisher or subscriber to its peers 49-91 ms after it is created (measured);
@@ -169,7 +170,7 @@ class Session:
             if code is None:
                 node.process.signal_group(signal.SIGKILL)
                 code = node.process.wait(EXIT_WAIT_WALL_S)
-            status, message = _exit_status(code)
+            status, message = exit_status(code)
             self._ended(node, status, message, code)
         elif isinstance(exc, NodeSilent):
             self._stop(node, "timeout", f"the node {exc}; it was stopped (an endless loop outside rospy calls, "
@@ -223,7 +224,7 @@ class Session:
                     node.process.signal_group(signal.SIGTERM)
                     node.kill_ns = t_next + _ns(1.0)
                     if node.process.wait(0.2) is not None:
-                        self._ended(node, *_exit_status(node.process.popen.returncode),
+                        self._ended(node, *exit_status(node.process.popen.returncode),
                                     node.process.popen.returncode)
                         continue
                 due = node.wake_ns is not None and node.wake_ns <= t_next
@@ -346,20 +347,6 @@ class Session:
 def _wall_epoch(t_ns: int) -> float:
     """A fixed wall-clock epoch for the node's time.time(), so log lines are identical run to run."""
     return 1_700_000_000.0 - t_ns / 1e9
-
-
-def _exit_status(code: int | None) -> tuple[str, str]:
-    if code is None:
-        return "timeout", "closed its channel but did not exit"
-    if code >= 0:
-        return "exited", f"exited with code {code}"
-    sig = -code
-    if sig == signal.SIGXCPU:
-        return "killed_by_limit", "exceeded its CPU-time limit"
-    if sig == signal.SIGXFSZ:
-        return "killed_by_limit", "exceeded its file-size limit"
-    name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else str(sig)
-    return "crashed", f"died from signal {name}"
 
 
 def run(spec: RunSpec, recording: Path, log: Path) -> RunResult:
