@@ -319,6 +319,10 @@ def cmd_bench(args: argparse.Namespace) -> int:
     err = Console(stderr=True)
     with err.status("Measuring physics speed …"):
         physics = _module("sim.bench").physics_benchmark(robot=args.robot, sim_seconds=args.seconds)
+    move_circle = args.reference / "move_circle.py" if args.reference else None
+    with err.status("Measuring node runs (40 s of sim time each) …"):
+        runtime = _module("grader.runtime.bench").runtime_benchmark(
+            move_circle if move_circle is not None and move_circle.is_file() else None)
     rows: list[dict[str, Any]] = []
     if args.reference:
         grading = _module("grader.grading")
@@ -337,15 +341,17 @@ def cmd_bench(args: argparse.Namespace) -> int:
                         }
                     )
     if args.json:
-        print(json.dumps({"physics": physics, "reference": rows}, indent=2, default=str))
+        print(json.dumps({"physics": physics, "runtime": runtime, "reference": rows}, indent=2, default=str))
         return EXIT_OK
     console = Console()
-    table = Table(title=f"physics ({args.robot}, {args.seconds:g} s simulated)")
-    table.add_column("Figure")
-    table.add_column("Value", justify="right")
-    for key, value in physics.items():
-        table.add_row(Text(str(key)), Text(fmt_number(value) if isinstance(value, (int, float)) else str(value)))
-    console.print(table)
+    for title, figures in ((f"physics ({args.robot}, {args.seconds:g} s simulated)", physics),
+                           ("node runs: process start to closed recording", runtime)):
+        table = Table(title=title)
+        table.add_column("Figure")
+        table.add_column("Value", justify="right")
+        for key, value in figures.items():
+            table.add_row(Text(str(key)), Text(fmt_number(value) if isinstance(value, (int, float)) else str(value)))
+        console.print(table)
     if rows:
         grading_table = Table(title="grading wall time per reference solution")
         for column in ("Solution", "Tasks", "Points", "Wall time [s]"):

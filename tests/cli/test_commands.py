@@ -67,19 +67,38 @@ def bench_module() -> types.ModuleType:
     return module
 
 
-def test_bench_prints_physics_figures(grading, monkeypatch, capsys):
+def runtime_bench_module(calls: list) -> types.ModuleType:
+    module = types.ModuleType("grader.runtime.bench")
+
+    def runtime_benchmark(move_circle=None):
+        calls.append(move_circle)
+        return {"sim_seconds": 40.0, "move_circle_wall_s_median": 0.48, "busy_loop_sim_s_per_wall_s": 34.2}
+
+    module.runtime_benchmark = runtime_benchmark
+    return module
+
+
+def test_bench_prints_physics_and_node_run_figures(grading, monkeypatch, capsys):
+    calls: list = []
     fakes.install(monkeypatch, "sim.bench", bench_module())
+    fakes.install(monkeypatch, "grader.runtime.bench", runtime_bench_module(calls))
     assert main(["bench", "--seconds", "5"]) == 0
-    assert "real_time_factor" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "real_time_factor" in out and "busy_loop_sim_s_per_wall_s" in out
+    assert calls == [None]
 
 
 def test_bench_times_reference_solutions(grading, monkeypatch, tmp_path, capsys):
+    calls: list = []
     fakes.install(monkeypatch, "sim.bench", bench_module())
+    fakes.install(monkeypatch, "grader.runtime.bench", runtime_bench_module(calls))
     (tmp_path / "refs").mkdir()
     (tmp_path / "refs" / "move_circle.py").write_text("import rospy\n")
     assert main(["bench", "--reference", str(tmp_path / "refs"), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["physics"]["real_time_factor"] == 184.2
+    assert data["runtime"]["move_circle_wall_s_median"] == 0.48
+    assert calls == [tmp_path / "refs" / "move_circle.py"]
     assert data["reference"][0]["solution"] == "move_circle.py" and data["reference"][0]["wall_s"] >= 0
 
 

@@ -1,0 +1,196 @@
+"""One recorded run as plain arrays: the only input metrics see, so they can be tested on synthetic data."""
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+import numpy as np
+
+DRIVER_CALLERID = "/rosgrade_driver"  # the grader's scripted driver; its commands are not the student's
+RUN_KEYS = ("shutdown_requested_s", "exit_code", "exit_signal", "status", "ended_s")
+
+
+class RunDataError(Exception):
+    """A recording does not provide the arrays a run needs."""
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """Planar poses in time order: t (s, sim time), x, y (m), yaw (rad); ``source`` says where they came from."""
+
+    t: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    yaw: np.ndarray
+    source: str = "odometry"
+
+    @classmethod
+    def of(cls, t: Any, x: Any, y: Any, yaw: Any, source: str = "odometry") -> Trajectory:
+        """Build from sequences, sorted by time, keeping one sample per stamp (repeated stamps add nothing)."""
+        arrays = [np.asarray(a, dtype=float).reshape(-1) for a in (t, x, y, yaw)]
+        if len({len(a) for a in arrays}) != 1:
+            raise RunDataError("trajectory arrays t, x, y, yaw differ in length")
+        order = np.argsort(arrays[0], kind="stable")
+        t_sorted = arrays[0][order]
+        keep = np.concatenate(([True], np.diff(t_sorted) > 0)) if len(t_sorted) else np.zeros(0, bool)
+        return cls(*(a[order][keep] for a in arrays), source=source)
+
+    def __len__(self) -> int:
+        return len(self.t)
+
+    def between(self, start: float = -math.inf, end: float = math.inf) -> Trajectory:
+        """The samples with start <= t <= end."""
+        m = (self.t >= start) & (self.t <= end)
+        return Trajectory(self.t[m], self.x[m], self.y[m], self.yaw[m], self.source)
+
+
+@dataclass(frozen=True)
+class Commands:
+    """Velocity commands the student's node published: t (s), linear and angular (N x 3), topic of each."""
+
+    t: np.ndarray
+    linear: np.ndarray
+    angular: np.ndarray
+    topic: tuple[str, ...] = ()
+
+    @classmethod
+    def of(cls, t: Any, linear: Any, angular: Any, topic: Any = ()) -> Commands:
+        """Build from sequences; ``linear``/``angular`` are (N, 3) or a bare x / z column for 2-D commands."""
+        t_arr = np.asarray(t, dtype=float).reshape(-1)
+        n = len(t_arr)
+        lin, ang = np.asarray(linear, dtype=float), np.asarray(angular, dtype=float)
+        if lin.ndim == 1:
+            lin = np.column_stack([lin, np.zeros(n), np.zeros(n)]) if n else np.zeros((0, 3))
+        if ang.ndim == 1:
+            ang = np.column_stack([np.zeros(n), np.zeros(n), ang]) if n else np.zeros((0, 3))
+        topics = (topic,) * n if isinstance(topic, str) else tuple(topic)
+        return cls(t_arr, lin.reshape(n, 3), ang.reshape(n, 3), topics)
+
+    @classmethod
+    def empty(cls) -> Commands:
+        return cls.of([], [], [])
+
+    def __len__(self) -> int:
+        return len(self.t)
+
+    def is_zero(self) -> np.ndarray:
+        """Per message: every one of the six components is exactly zero (a full stop)."""
+        return np.all(np.hstack([self.linear, self.angular]) == 0.0, axis=1)
+
+
+@dataclass(frozen=True)
+class OutputLine:
+    """One line the node wrote: sim time (s), stream (stdout, stderr, rosout, ...) and text."""
+
+    t: float
+    stream: str
+    text: str
+
+
+@dataclass(frozen=True)
+class RunInfo:
+    """How the node's process went: from the recording's ``rosgrade.run`` metadata (sim-time seconds)."""
+
+    shutdown_requested_s: float | None = None
+    exit_code: int | None = None
+    exit_signal: int | str | None = None
+    status: str | None = None
+    ended_s: float | None = None
+
+    @classmethod
+    def from_metadata(cls, metadata: dict[str, Any] | None) -> RunInfo:
+        """Read the run record, whose values may be JSON text (MCAP metadata holds strings only)."""
+        record = _decode((metadata or {}).get("rosgrade.run") or {})
+        if not isinstance(record, dict):
+            return cls()
+        record = {k: _decode(v) for k, v in record.items()}
+        if len(record) == 1 and isinstance(next(iter(record.values())), dict):
+            record = next(iter(record.values()))  # a record that nests everything under one key
+        values = {k: _decode(record.get(k)) for k in RUN_KEYS}
+        for k in ("shutdown_requested_s", "ended_s"):
+            values[k] = None if values[k] is None else float(values[k])
+        if values["exit_code"] is not None:
+            values["exit_code"] = int(values["exit_code"])
+        return cls(**values)
+
+
+@dataclass(frozen=True)
+class RunData:
+    """Everything a metric may read about one scenario run."""
+
+    odometry: Trajectory
+    ground_truth: Trajectory | None = None
+    commands: Commands = field(default_factory=Commands.empty)
+    lines: tuple[OutputLine, ...] = ()
+    run: RunInfo = field(default_factory=RunInfo)
+    start_time: float = 0.0  # sim time (s) when the node was started
+    shutdown_at: float | None = None  # scenario's Ctrl+C time, seconds after start
+
+    def trajectory(self, source: Literal["ground_truth", "odometry"]) -> Trajectory:
+        """The requested path; ground truth falls back to odometry when the recording has none."""
+        if source == "ground_truth" and self.ground_truth is not None and len(self.ground_truth):
+            return self.ground_truth
+        return self.odometry
+
+    def shutdown_time(self) -> float | None:
+        """Sim time (s) of the Ctrl+C: as the run recorded it, else as the scenario planned it."""
+        if self.run.shutdown_requested_s is not None:
+            return self.run.shutdown_requested_s
+        return None if self.shutdown_at is None else self.start_time + self.shutdown_at
+
+    @classmethod
+    def from_recording(cls, recording: Any, start_time: float = 0.0, shutdown_at: float | None = None) -> RunData:
+        """Adapt a ``grader.recording.Recording`` (documented API in DEVELOPERS.md) into arrays."""
+        odom = recording.odometry()
+        truth = recording.ground_truth()
+        return cls(
+            odometry=_trajectory(odom, "odometry"),
+            ground_truth=None if truth is None else _trajectory(truth, "ground_truth"),
+            commands=_student_commands(recording.commands()),
+            lines=tuple(OutputLine(float(t), str(s), str(text)) for t, s, text in recording.output_lines()),
+            run=RunInfo.from_metadata(getattr(recording, "metadata", None)),
+            start_time=start_time,
+            shutdown_at=shutdown_at,
+        )
+
+
+def _decode(value: Any) -> Any:
+    """JSON-decode a string that holds JSON; anything else is returned as it is."""
+    if isinstance(value, str):
+        try:
+            return json.loads(value)
+        except json.JSONDecodeError:
+            return value
+    return value
+
+
+def _trajectory(series: Any, source: str) -> Trajectory:
+    return Trajectory.of(series.t, series.x, series.y, series.yaw, source)
+
+
+def _column(series: Any, name: str) -> np.ndarray:
+    """An (N, 3) vector column, whether the series stores ``name`` as one array or as ``name_x/_y/_z``."""
+    if hasattr(series, name):
+        return np.asarray(getattr(series, name), dtype=float).reshape(-1, 3)
+    return np.column_stack([np.asarray(getattr(series, f"{name}_{a}"), dtype=float) for a in "xyz"])
+
+
+def _strings(value: Any, n: int) -> list[str]:
+    if value is None:
+        return [""] * n
+    return [value] * n if isinstance(value, str) else [str(v) for v in value]
+
+
+def _student_commands(series: Any) -> Commands:
+    """The node's commands only: the scripted driver's are the grader's, not the student's."""
+    t = np.asarray(series.t, dtype=float).reshape(-1)
+    n = len(t)
+    caller = _strings(getattr(series, "callerid", None), n)
+    keep = np.array([c != DRIVER_CALLERID for c in caller], dtype=bool)
+    topics = _strings(getattr(series, "topic", None), n)
+    return Commands.of(
+        t[keep], _column(series, "linear")[keep], _column(series, "angular")[keep],
+        tuple(tp for tp, k in zip(topics, keep) if k),
+    )

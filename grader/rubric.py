@@ -1,0 +1,391 @@
+"""Rubric models: one TOML file per task names the node to run, the scenarios and the criteria; validated here.
+
+An instructor adds a task by writing a TOML file that uses the existing metrics (see ``rubrics/README.md``).
+Every mistake is reported as ``file: field: what was expected`` before anything runs.
+"""
+from __future__ import annotations
+
+import math
+import os
+import re
+import string
+import tomllib
+from pathlib import Path
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, field_validator, model_validator
+
+from grader.metrics import METRICS, MetricParams
+from grader.metrics.facts import FACTS
+from grader.report import Visibility
+from grader.tolerance import Sigmoid, ToleranceError, check
+
+RUBRICS_ENV = "ROSGRADE_RUBRICS"
+DEFAULT_DIR = Path(__file__).resolve().parent.parent / "rubrics"  # the `rubrics` package next to `grader`
+# Names every feedback template may use besides the metric's quantities and the run facts.
+TEMPLATE_NAMES = frozenset({"measured", "lower", "upper", "expected", "scenario", "credit", "points", "score"})
+_ID = r"^[a-z][a-z0-9_]*$"
+
+
+class RubricError(Exception):
+    """A rubric file is unreadable or invalid; says which file, which field and what was expected."""
+
+    def __init__(self, file: str | Path, field: str, expected: str, more: list[str] | None = None) -> None:
+        self.file, self.field, self.expected = str(file), field, expected
+        lines = [f"{self.file}: {field}: {expected}", *(more or [])]
+        super().__init__("\n".join(lines))
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class Pose(_Model):
+    """A planar pose in the world frame: metres and radians."""
+
+    x: float = 0.0
+    y: float = 0.0
+    yaw: float = Field(0.0, ge=-2 * math.pi, le=2 * math.pi)
+
+
+class Imperfections(_Model):
+    """Odometry imperfections the world simulates (fractions: 0.01 is 1 %)."""
+
+    wheel_radius_error: float = Field(0.0, gt=-0.5, lt=0.5)
+    slip: float = Field(0.0, ge=0.0, lt=1.0)
+
+
+class ScriptedCommand(_Model):
+    """A velocity the grader's driver gives the robot from ``t`` seconds after start (for subscriber-only tasks)."""
+
+    t: float = Field(ge=0.0)
+    linear: float = 0.0
+    angular: float = 0.0
+
+
+class Scenario(_Model):
+    """One run of the node; the fields mirror ``sim.Scenario`` plus a name and a description for feedback."""
+
+    name: str = Field(pattern=_ID)
+    description: str = ""
+    robot: str
+    base_mode: str | None = None  # None: the robot profile's default base driver
+    initial_pose: Pose = Pose()
+    start_time: float = Field(0.0, ge=0.0)  # sim time (s) when the node starts
+    duration: float = Field(gt=0.0)  # s after start until the recording ends
+    shutdown_at: float | None = Field(None, gt=0.0)  # s after start at which the grader sends Ctrl+C
+    seed: int = 0
+    imperfections: Imperfections = Imperfections()
+    script: list[ScriptedCommand] = []
+
+    @model_validator(mode="after")
+    def _shutdown_inside(self) -> Scenario:
+        if self.shutdown_at is not None and self.shutdown_at >= self.duration:
+            raise ValueError(f"shutdown_at ({self.shutdown_at}) must be less than duration ({self.duration})")
+        return self
+
+
+class Node(_Model):
+    """The student's script to run: found by file name in the submission, then by each alias in turn."""
+
+    script: str = Field(pattern=r"^[\w.-]+\.py$")
+    aliases: list[str] = []
+    args: list[str] = []
+    stdin: str | None = None
+    remaps: dict[str, str] = {}
+    namespace: str | None = None  # ROS_NAMESPACE
+
+
+class Tolerance(_Model):
+    """How the measured value becomes credit: full inside ``bounds``, ``value_at_margin`` at ``margin`` outside."""
+
+    bounds: tuple[float, float]
+    margin: float = 0.0
+    sigmoid: Sigmoid = "linear"
+    value_at_margin: float = 0.0
+
+    @model_validator(mode="after")
+    def _consistent(self) -> Tolerance:
+        try:
+            check(self.bounds, self.margin, self.sigmoid, self.value_at_margin)
+        except ToleranceError as e:
+            raise ValueError(str(e)) from None
+        return self
+
+
+class Condition(_Model):
+    """A test on one measured quantity; a hint applies when all its conditions hold."""
+
+    quantity: str
+    min: float | None = None
+    max: float | None = None
+    equals: bool | float | str | None = None
+    contains: str | None = None
+
+    @model_validator(mode="after")
+    def _has_test(self) -> Condition:
+        if self.min is None and self.max is None and self.equals is None and self.contains is None:
+            raise ValueError("a condition needs at least one of min, max, equals, contains")
+        return self
+
+    def holds(self, values: dict[str, Any]) -> bool:
+        """True when the quantity is present and passes every test given."""
+        v = values.get(self.quantity)
+        if v is None:
+            return False
+        if self.contains is not None and self.contains.lower() not in str(v).lower():
+            return False
+        if self.equals is not None and v != self.equals:
+            return False
+        if self.min is None and self.max is None:
+            return True
+        if isinstance(v, (str, bool)) or math.isnan(float(v)):
+            return False
+        lo = -math.inf if self.min is None else self.min
+        hi = math.inf if self.max is None else self.max
+        return lo <= float(v) <= hi
+
+
+class Hint(_Model):
+    """Feedback about a likely cause, added when its conditions hold (e.g. radius 1 m and v = w)."""
+
+    when: list[Condition] = Field(min_length=1)
+    text: str
+
+
+class Feedback(_Model):
+    """Templates for the verdict, filled with ``{name:.3f}``-style fields (quantities, ``measured``, ``expected``...)."""
+
+    passed: str = "{measured} is within {expected}."
+    partial: str | None = None  # default: the failed text
+    failed: str = "measured {measured}, expected {expected}."
+
+
+class Criterion(_Model):
+    """One scored item: a metric's quantity, mapped to credit by a tolerance, over one or more scenarios."""
+
+    id: str = Field(pattern=_ID)
+    title: str
+    points: float = Field(gt=0.0)
+    metric: str
+    quantity: str
+    params: dict[str, Any] = {}
+    scenarios: list[str] | None = None  # None: every scenario of the rubric
+    combine: Literal["min", "mean"] = "min"
+    tolerance: Tolerance
+    expected: str = ""
+    visibility: Visibility = "visible"
+    feedback: Feedback = Feedback()
+    hints: list[Hint] = []
+    _params: MetricParams = PrivateAttr()
+
+    @field_validator("metric")
+    @classmethod
+    def _known_metric(cls, v: str) -> str:
+        if v not in METRICS:
+            raise ValueError(f"unknown metric {v!r}; expected one of {', '.join(sorted(METRICS))}")
+        return v
+
+    @model_validator(mode="after")
+    def _check_against_metric(self) -> Criterion:
+        metric = METRICS[self.metric]
+        try:
+            self._params = metric.params.model_validate(self.params)
+        except ValidationError as e:
+            raise ValueError(f"params for metric {self.metric!r}: " + "; ".join(_brief(err) for err in e.errors()))
+        if self.quantity not in metric.quantities:
+            raise ValueError(
+                f"quantity {self.quantity!r} is not measured by {self.metric!r}; "
+                f"expected one of {', '.join(sorted(metric.quantities))}"
+            )
+        known = metric.quantities | FACTS | TEMPLATE_NAMES
+        texts = [self.feedback.passed, self.feedback.partial or "", self.feedback.failed, *(h.text for h in self.hints)]
+        for text in texts:
+            for name in _template_names(text):
+                if name not in known:
+                    raise ValueError(f"feedback field {{{name}}} is unknown; expected one of {', '.join(sorted(known))}")
+        for hint in self.hints:
+            for cond in hint.when:
+                if cond.quantity not in metric.quantities | FACTS:
+                    raise ValueError(f"hint condition on unknown quantity {cond.quantity!r}")
+        return self
+
+    @property
+    def metric_params(self) -> MetricParams:
+        """The validated parameters for this criterion's metric."""
+        return self._params
+
+    @property
+    def expected_text(self) -> str:
+        """What the feedback calls the expected value: the rubric's words, else the bounds."""
+        if self.expected:
+            return self.expected
+        lo, hi = self.tolerance.bounds
+        return f"{lo:g}" if lo == hi else f"between {lo:g} and {hi:g}"
+
+
+class Rubric(_Model):
+    """A task: its id and title, the robot, the node(s) to run, the scenarios and the criteria."""
+
+    id: str = Field(pattern=_ID)
+    title: str
+    description: str = ""
+    robot: str
+    nodes: list[Node] = Field(min_length=1)
+    scenarios: list[Scenario] = Field(min_length=1)
+    criteria: list[Criterion] = Field(min_length=1)
+
+    @model_validator(mode="before")
+    @classmethod
+    def _apply_defaults(cls, data: Any) -> Any:
+        """Fill each scenario from ``scenario_defaults`` (one level deep) and the rubric's robot."""
+        if not isinstance(data, dict):
+            return data
+        data = dict(data)
+        defaults = data.pop("scenario_defaults", {}) or {}
+        scenarios = data.get("scenarios")
+        if isinstance(defaults, dict) and isinstance(scenarios, list):
+            merged = []
+            for s in scenarios:
+                if not isinstance(s, dict):
+                    merged.append(s)
+                    continue
+                m = {"robot": data.get("robot"), **defaults}
+                for k, v in s.items():
+                    m[k] = {**m[k], **v} if isinstance(v, dict) and isinstance(m.get(k), dict) else v
+                merged.append(m)
+            data["scenarios"] = merged
+        return data
+
+    @model_validator(mode="after")
+    def _cross_references(self) -> Rubric:
+        names = [s.name for s in self.scenarios]
+        _unique(names, "scenario name")
+        _unique([c.id for c in self.criteria], "criterion id")
+        by_name = {s.name: s for s in self.scenarios}
+        for c in self.criteria:
+            for name in c.scenarios or []:
+                if name not in by_name:
+                    raise ValueError(f"criterion {c.id!r} names scenario {name!r}; expected one of {', '.join(names)}")
+            if METRICS[c.metric].needs_shutdown:
+                for s in self.scenario_list(c):
+                    if s.shutdown_at is None:
+                        raise ValueError(f"criterion {c.id!r} checks the shutdown, but scenario {s.name!r} has no shutdown_at")
+        return self
+
+    @property
+    def max_score(self) -> float:
+        """Sum of the criteria's points."""
+        return float(sum(c.points for c in self.criteria))
+
+    def scenario_list(self, criterion: Criterion) -> list[Scenario]:
+        """The scenarios a criterion is scored on, in rubric order."""
+        return [s for s in self.scenarios if criterion.scenarios is None or s.name in criterion.scenarios]
+
+
+def _unique(values: list[str], what: str) -> None:
+    seen: set[str] = set()
+    for v in values:
+        if v in seen:
+            raise ValueError(f"{what} {v!r} appears twice; expected unique values")
+        seen.add(v)
+
+
+def _template_names(text: str) -> list[str]:
+    """The field names a ``str.format`` template uses."""
+    try:
+        return [name.split(".")[0].split("[")[0] for _, name, _, _ in string.Formatter().parse(text) if name]
+    except ValueError as e:
+        raise ValueError(f"feedback template {text!r} is malformed: {e}") from None
+
+
+def _brief(err: Any) -> str:
+    """One pydantic error as 'field: message'."""
+    loc = ".".join(str(p) for p in err["loc"])
+    msg = str(err["msg"]).removeprefix("Value error, ")
+    return f"{loc}: {msg}" if loc else msg
+
+
+def _field_path(loc: tuple[Any, ...], data: Any) -> str:
+    """``criteria[2] (id 'radius').tolerance.margin`` from a pydantic location and the raw data."""
+    parts: list[str] = []
+    node = data
+    for p in loc:
+        if isinstance(p, int):
+            parts[-1] += f"[{p}]"
+            node = node[p] if isinstance(node, list) and p < len(node) else None
+            if isinstance(node, dict) and isinstance(node.get("id") or node.get("name"), str):
+                parts[-1] += f" ({node.get('id') or node.get('name')!r})"
+        else:
+            parts.append(str(p))
+            node = node.get(p) if isinstance(node, dict) else None
+    return ".".join(parts) or "(top level)"
+
+
+class SafeFormatter(string.Formatter):
+    """``str.format`` that never fails on a value: a spec that does not fit (None with ``.3f``) prints the value."""
+
+    def format_field(self, value: Any, format_spec: str) -> str:
+        if isinstance(value, float) and math.isnan(value):
+            return "n/a"
+        try:
+            return super().format_field(value, format_spec)
+        except (ValueError, TypeError):
+            return str(value)
+
+
+def render(template: str, values: dict[str, Any]) -> str:
+    """Fill a feedback template; unknown or missing fields print as 'n/a'."""
+    return SafeFormatter().vformat(template, (), _Missing(values))
+
+
+class _Missing(dict):  # type: ignore[type-arg]
+    def __missing__(self, key: str) -> str:
+        return "n/a"
+
+
+def load_rubric(path: str | Path) -> Rubric:
+    """Read and validate one rubric TOML file; raise RubricError naming the file, field and expectation."""
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as e:
+        raise RubricError(path, "(file)", f"cannot read the rubric: {e.strerror or e}") from None
+    except tomllib.TOMLDecodeError as e:
+        where = re.search(r"line \d+(, column \d+)?", str(e))
+        raise RubricError(path, where.group(0) if where else "(syntax)", f"TOML syntax error: {e}") from None
+    try:
+        rubric = Rubric.model_validate(data)
+    except ValidationError as e:
+        errors = e.errors()
+        described = [(_field_path(tuple(err["loc"]), data), _describe(err)) for err in errors]
+        first_field, first_msg = described[0]
+        raise RubricError(path, first_field, first_msg, [f"{path}: {f}: {m}" for f, m in described[1:]]) from None
+    if rubric.id != path.stem:
+        raise RubricError(path, "id", f"the task id {rubric.id!r} must match the file name {path.stem!r}")
+    return rubric
+
+
+def _describe(err: Any) -> str:
+    """What was expected, in words, with the value given when it is short."""
+    msg = str(err["msg"]).removeprefix("Value error, ")
+    if err["type"] == "missing":
+        return "required field is missing"
+    if err["type"] == "extra_forbidden":
+        return "unknown field (check the spelling; see rubrics/README.md for the fields)"
+    given = err.get("input")
+    if isinstance(given, (int, float, str, bool)) and len(repr(given)) < 60 and err["type"] not in ("value_error",):
+        return f"{msg} (got {given!r})"
+    return msg
+
+
+def load_rubrics(directory: Path | None = None) -> dict[str, Rubric]:
+    """Every ``*.toml`` rubric in ``directory`` (default: $ROSGRADE_RUBRICS, else the ``rubrics`` package), by id."""
+    directory = Path(directory or os.environ.get(RUBRICS_ENV) or DEFAULT_DIR)
+    if not directory.is_dir():
+        raise RubricError(directory, "(directory)", "expected a directory of rubric TOML files")
+    rubrics: dict[str, Rubric] = {}
+    for path in sorted(directory.glob("*.toml")):
+        rubric = load_rubric(path)
+        rubrics[rubric.id] = rubric
+    return rubrics

@@ -1,0 +1,42 @@
+"""The example submissions and reference solutions agree with the rubrics (the end-to-end runs need the runtime)."""
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from grader.rubric import load_rubrics
+
+ROOT = Path(__file__).resolve().parents[2]
+RUBRICS = load_rubrics()
+EXPECTED = tomllib.loads((ROOT / "submissions_example" / "EXPECTED.toml").read_text(encoding="utf-8"))
+
+
+def _scripts(folder: Path) -> set[str]:
+    return {p.name for p in folder.rglob("*.py")}
+
+
+@pytest.mark.parametrize("task", sorted(RUBRICS))
+def test_every_task_has_an_executable_reference_node(task: str) -> None:
+    path = ROOT / "reference_solutions" / RUBRICS[task].nodes[0].script
+    text = path.read_text(encoding="utf-8")
+    assert text.startswith("#!/usr/bin/env python3\n") and "rospy" in text
+    compile(text, str(path), "exec")
+
+
+@pytest.mark.parametrize("student", sorted(EXPECTED))
+def test_expected_outcomes_name_real_students_tasks_and_criteria(student: str) -> None:
+    folder = ROOT / "submissions_example" / student
+    for task, expect in EXPECTED[student].items():
+        rubric = RUBRICS[task]
+        ids = {c.id for c in rubric.criteria}
+        assert set(expect["lose"]) | set(expect.get("keep", [])) <= ids
+        assert not set(expect["lose"]) & set(expect.get("keep", []))
+        assert set(expect.get("says", {})) <= set(expect["lose"])
+        names = {n.script for n in rubric.nodes} | {a for n in rubric.nodes for a in n.aliases}
+        assert names & _scripts(folder), f"{student} has no script for {task}"
+    for path in folder.rglob("*.py"):
+        text = path.read_text(encoding="utf-8")
+        assert text.startswith("#!/usr/bin/env python3\n"), path
+        compile(text, str(path), "exec")
