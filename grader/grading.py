@@ -47,7 +47,7 @@ def detect_tasks(submission: Path, rubrics: Mapping[str, Rubric] | None = None) 
 
 def _node_spec(script: Path, node: Node) -> NodeSpec:
     args = (*node.args, *(f"{name}:={target}" for name, target in node.remaps.items()))
-    return NodeSpec(script=script, args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace)
+    return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace)
 
 
 def _sim_scenario(scenario: RubricScenario) -> Scenario:
