@@ -26,6 +26,10 @@ def mover():
     turn = Twist()
     turn.angular.z = TURN_SPEED
 
+    # Under simulated time the clock reads 0 until the first /clock message arrives after init_node.
+    while rospy.Time.now().is_zero() and not rospy.is_shutdown():
+        rate.sleep()
+
     moving_forward = True
     phase_start = rospy.Time.now().to_sec()
     while not rospy.is_shutdown():

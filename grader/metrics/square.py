@@ -33,7 +33,6 @@ def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
 
 def _turns(traj: Trajectory, w: np.ndarray, turn_rate: float, merge_gap_s: float) -> list[tuple[int, int, float]]:
     """Turning runs as (first interval, end interval, heading change rad); same-direction runs split by a blip merge."""
-    dt = np.diff(traj.t)
     merged: list[list[int]] = []
     for i, j in _runs(np.abs(w) > turn_rate):
         same_way = merged and np.sign(w[i]) == np.sign(w[merged[-1][0]])
@@ -41,7 +40,12 @@ def _turns(traj: Trajectory, w: np.ndarray, turn_rate: float, merge_gap_s: float
             merged[-1][1] = j
         else:
             merged.append([i, j])
-    return [(i, j, float(np.sum(w[i:j] * dt[i:j]))) for i, j in merged]
+    # A corner is the heading change between the middles of the straight stretches either side of the turn,
+    # so the slow final approach of a controller that eases into its target angle (below turn_rate) still counts.
+    heading = np.unwrap(traj.yaw)
+    bounds = [0, *(k for run in merged for k in run), len(traj) - 1]
+    middles = [(a + b) // 2 for a, b in zip(bounds[::2], bounds[1::2])]
+    return [(i, j, float(heading[middles[n + 1]] - heading[middles[n]])) for n, (i, j) in enumerate(merged)]
 
 
 def analyse_square(

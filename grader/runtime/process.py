@@ -1,27 +1,39 @@
-"""Start a student's node as its own process, with our client library first on its path, and clean it up."""
+"""Start a student's node as its own process, confined and with rlimits, and make sure nothing of it outlives the run."""
 from __future__ import annotations
 
 import os
-import resource
+import secrets
 import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
+from grader.runtime import confine
 from grader.runtime.spec import Limits, NodeSpec
 
+try:
+    import resource
+except ImportError:  # Windows: no rlimits; the grader's own watchdogs still apply
+    resource = None  # type: ignore[assignment]
+
 NODELIB = Path(__file__).resolve().parents[1] / "nodelib"
+# Every node process (and whatever it starts without clearing its environment) carries this variable, so leftovers
+# can be found through /proc even when they left the node's process group.
+MARKER_ENV = "ROSGRADE_NODE_MARKER"
 
 # Nothing of the grader's environment leaks into the node except what a terminal on a ROS machine would give it;
 # ROS_* and PYTHONPATH are dropped so a real ROS install on this machine is never picked up.
 _KEPT_ENV = ("PATH", "LANG", "LC_ALL", "TZ", "TERM")
+# Seconds close() keeps looking for stragglers (a fork bomb refills while it is being killed).
+_REAP_S = 5.0
 
 
 class ProcessError(Exception):
     """A node process could not be started."""
 
 
-def node_environment(spec: NodeSpec, channel: str, home: Path) -> dict[str, str]:
+def node_environment(spec: NodeSpec, channel: str, home: Path | str) -> dict[str, str]:
     env = {k: os.environ[k] for k in _KEPT_ENV if k in os.environ}
     env.update(
         HOME=str(home),
@@ -32,6 +44,10 @@ def node_environment(spec: NodeSpec, channel: str, home: Path) -> dict[str, str]
         # Set iteration order (and so anything a node prints from a set) must not vary between runs.
         PYTHONHASHSEED="0",
         PYTHONIOENCODING="utf-8",
+        # One BLAS/OpenMP thread: numpy in a node stays within the process limit and gives the same sums every run.
+        OPENBLAS_NUM_THREADS="1",
+        OMP_NUM_THREADS="1",
+        MKL_NUM_THREADS="1",
         ROSGRADE_CHANNEL=channel,
         ROS_MASTER_URI="http://localhost:11311",
     )
@@ -41,17 +57,35 @@ def node_environment(spec: NodeSpec, channel: str, home: Path) -> dict[str, str]
     return env
 
 
-def _apply_limits(limits: Limits) -> None:
-    """Runs in the child between fork and exec: rlimits that the kernel enforces for us."""
-    cpu = int(limits.cpu_s)
+def _own_process_count() -> int:
+    """Processes and threads of this user now (RLIMIT_NPROC counts them all, not just the node's)."""
+    uid = os.getuid()
+    total = 0
+    for pid in confine.processes():
+        fields = confine.status_fields(pid)
+        if fields.get("Uid", "").split()[:1] == [str(uid)]:
+            total += int(fields.get("Threads", "1") or 1)
+    return total
+
+
+def rlimit_pairs(limits: Limits, nproc: int | None) -> list[tuple[int, tuple[int, int]]]:
+    """The rlimits for a node; nproc None leaves the process count to the grader's watchdogs."""
+    if resource is None:
+        return []
+    cpu = max(1, int(limits.cpu_s))
     pairs = [
         (resource.RLIMIT_CPU, (cpu, cpu + 5)),
         (resource.RLIMIT_AS, (limits.memory_mb << 20, limits.memory_mb << 20)),
         (resource.RLIMIT_FSIZE, (limits.file_mb << 20, limits.file_mb << 20)),
         (resource.RLIMIT_CORE, (0, 0)),
     ]
-    if os.geteuid() != 0:  # root ignores RLIMIT_NPROC; the process-group kill covers root runs
-        pairs.append((resource.RLIMIT_NPROC, (limits.processes, limits.processes)))
+    if nproc is not None and hasattr(resource, "RLIMIT_NPROC"):
+        pairs.append((resource.RLIMIT_NPROC, (nproc, nproc)))
+    return pairs
+
+
+def _child_setup(pairs: list[tuple[int, tuple[int, int]]], uid: int | None) -> None:
+    """Runs in the child between fork and exec: rlimits the kernel enforces for us, then (no sandbox) the uid."""
     for which, value in pairs:
         try:
             resource.setrlimit(which, value)
@@ -59,39 +93,60 @@ def _apply_limits(limits: Limits) -> None:
             pass
     # Ctrl+C from the grader's terminal must not reach the node directly: shutdown is the grader's decision.
     signal.signal(signal.SIGINT, signal.SIG_DFL)
+    if uid is not None:
+        confine.drop_privileges(uid)
 
 
 class NodeProcess:
     """One running node: its Popen, the grader's ends of the channel pipes, and its raw-output file."""
 
     def __init__(self, spec: NodeSpec, workdir: Path, raw_output: Path, limits: Limits) -> None:
+        self.limits = limits
+        self.marker = secrets.token_hex(8)
+        self.peak_tasks = 0  # processes + threads seen in the node's sandbox when it was killed
+        workdir.mkdir(parents=True, exist_ok=True)
+        script = Path(os.path.abspath(spec.script))
+        command = [sys.executable, "-B", str(script), *spec.args]
+        try:
+            self.plan = confine.plan(command, script, workdir, limits.file_mb)
+        except OSError as exc:
+            raise ProcessError(f"could not prepare the sandbox for {script.name}: {exc}") from None
+        self.notes = list(self.plan.notes)
+        if self.plan.uid is not None or (self.plan.sandboxed and os.geteuid() == 0):
+            nproc: int | None = limits.processes  # the node's own uid: the count is the node's alone
+        elif hasattr(os, "getuid") and sys.platform.startswith("linux") and os.getuid() != 0:
+            nproc = _own_process_count() + limits.processes
+        else:
+            nproc = None
         node_to_grader_r, node_to_grader_w = os.pipe()
         grader_to_node_r, grader_to_node_w = os.pipe()
-        home = workdir
-        home.mkdir(parents=True, exist_ok=True)
-        env = node_environment(spec, f"{grader_to_node_r},{node_to_grader_w}", home)
+        env = node_environment(spec, f"{grader_to_node_r},{node_to_grader_w}", self.plan.home)
+        env[MARKER_ENV] = self.marker
+        pairs = rlimit_pairs(limits, nproc)
         self._raw = open(raw_output, "wb")
         try:
             self.popen = subprocess.Popen(
-                [sys.executable, "-B", str(spec.script), *spec.args],
-                cwd=str(home),
+                self.plan.argv,
+                cwd=self.plan.cwd,
                 env=env,
                 stdin=subprocess.PIPE if spec.stdin is not None else subprocess.DEVNULL,
                 stdout=self._raw,
                 stderr=subprocess.STDOUT,
                 pass_fds=(grader_to_node_r, node_to_grader_w),
                 start_new_session=True,
-                preexec_fn=lambda: _apply_limits(limits),
+                preexec_fn=(lambda: _child_setup(pairs, None if self.plan.sandboxed else self.plan.uid))
+                if resource is not None else None,
             )
-        except OSError as exc:
+        except (OSError, subprocess.SubprocessError) as exc:
             self._raw.close()
             for fd in (node_to_grader_r, node_to_grader_w, grader_to_node_r, grader_to_node_w):
                 os.close(fd)
-            raise ProcessError(f"could not start {spec.script.name}: {exc}") from None
+            raise ProcessError(f"could not start {script.name}: {exc}") from None
         os.close(grader_to_node_r)
         os.close(node_to_grader_w)
         self.read_fd = node_to_grader_r
         self.write_fd = grader_to_node_w
+        self._sandbox_ns: str | None = None
         if spec.stdin is not None:
             try:
                 self.popen.stdin.write(spec.stdin.encode())
@@ -103,21 +158,120 @@ class NodeProcess:
     def pid(self) -> int:
         return self.popen.pid
 
+    # -- finding the node's processes ----------------------------------------------------------------------------
+    def _sandbox_init(self) -> int | None:
+        """bwrap's init process (pid 1 of the node's pid namespace), a child of the bwrap we started."""
+        kids = confine.children_of(self.popen.pid)
+        return kids[0] if kids else None
+
+    def _node_pid(self) -> int | None:
+        """The host pid of the node's interpreter (inside the sandbox it is pid 2)."""
+        if not self.plan.sandboxed:
+            return self.popen.pid
+        init = self._sandbox_init()
+        kids = confine.children_of(init) if init else []
+        return min(kids) if kids else None
+
+    def leftovers(self) -> list[int]:
+        """Every process that belongs to this node and still exists (zombies included), by /proc."""
+        found: set[int] = set()
+        if self.plan.sandboxed:
+            if self._sandbox_ns is None:
+                init = self._sandbox_init()
+                self._sandbox_ns = confine.pid_namespace(init) if init else None
+            own = confine.pid_namespace(os.getpid())
+            for pid in confine.processes():
+                ns = confine.pid_namespace(pid)
+                if ns is not None and ns != own and ns == self._sandbox_ns:
+                    found.add(pid)
+        marker = self.marker.encode()
+        tree = {self.popen.pid}
+        parents = {pid: confine.parent_of(pid) for pid in confine.processes()}
+        changed = True
+        while changed:
+            changed = False
+            for pid, parent in parents.items():
+                if parent in tree and pid not in tree:
+                    tree.add(pid)
+                    changed = True
+        for pid in parents:
+            if pid == os.getpid():
+                continue
+            if (pid in tree and pid != self.popen.pid) or confine.has_marker(pid, marker) \
+                    or (self.plan.uid is not None and confine.uid_of(pid) == self.plan.uid):
+                found.add(pid)
+            else:
+                try:
+                    if os.getsid(pid) == self.popen.pid or os.getpgid(pid) == self.popen.pid:
+                        found.add(pid)
+                except OSError:
+                    pass
+        if self.popen.returncode is None:
+            found.add(self.popen.pid)
+        return sorted(found)
+
+    def census(self) -> int:
+        """Processes and threads the node has now (bwrap's own two processes not counted)."""
+        pids = [p for p in self.leftovers() if p != self.popen.pid]
+        if self.plan.sandboxed:
+            init = self._sandbox_init()
+            pids = [p for p in pids if p != init]
+        total = 0
+        for pid in pids:
+            fields = confine.status_fields(pid)
+            if fields.get("State", "").startswith("Z"):
+                continue
+            total += int(fields.get("Threads", "1") or 1)
+        return total
+
+    # -- signalling ---------------------------------------------------------------------------------------------
     def signal_group(self, sig: int) -> None:
-        """Signal the node and everything it started (it leads its own session)."""
+        """Signal the node and everything it started. SIGKILL reaches all of it, wherever it went."""
+        if sig == signal.SIGKILL:
+            self.peak_tasks = max(self.peak_tasks, self.census())
+            self._kill_all()
+            return
+        target = self._node_pid()
         try:
-            os.killpg(self.popen.pid, sig)
+            if target is None:
+                raise ProcessLookupError
+            os.killpg(target, sig)
         except (ProcessLookupError, PermissionError):
-            pass
+            try:
+                os.kill(target or self.popen.pid, sig)
+            except (ProcessLookupError, PermissionError, OSError):
+                pass
+
+    def _kill_all(self) -> None:
+        deadline = time.monotonic() + _REAP_S
+        while True:
+            try:
+                os.killpg(self.popen.pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                pass
+            left = [p for p in self.leftovers() if not confine.status_fields(p).get("State", "Z").startswith("Z")]
+            for pid in left:
+                try:
+                    os.kill(pid, signal.SIGKILL)
+                except (ProcessLookupError, PermissionError):
+                    pass
+            if not left or time.monotonic() > deadline:
+                return
+            time.sleep(0.01)
 
     def wait(self, timeout: float | None = None) -> int | None:
+        """The node's exit code (negative: the signal that killed it), or None if it is still running."""
         try:
-            return self.popen.wait(timeout)
+            code = self.popen.wait(timeout)
         except subprocess.TimeoutExpired:
             return None
+        # bwrap reports a child killed by signal n as exit code 128 + n.
+        if self.plan.sandboxed and 128 < code < 128 + 65:
+            return -(code - 128)
+        return code
 
     def close(self) -> None:
-        """Kill whatever is left of the process group and release every descriptor."""
+        """Kill whatever is left of the node and release every descriptor."""
         self.signal_group(signal.SIGKILL)
         self.wait(5.0)
         for fd in (self.read_fd, self.write_fd):

@@ -81,7 +81,6 @@ class Session:
         self.end_ns = spec.scenario.end_ns
         self.shutdown_ns = spec.scenario.shutdown_ns
         self.shutdown_sent = False
-        self.last_exit_ns: int | None = None
         self.seq: dict[str, int] = {}
         self.nodes: list[_Node] = []
         self.received: dict[str, int] = {}  # command topic -> commands the robot received from nodes
@@ -160,7 +159,6 @@ class Session:
         node.outcome.name = node.link.state.name
         node.outcome.ended_s = self.world.time_ns / 1e9
         node.outcome.exception = node.link.state.exception
-        self.last_exit_ns = self.world.time_ns
         for line in node.link.flush_output():
             self._output(node, line, self.world.time_ns)
 
@@ -187,10 +185,8 @@ class Session:
                 for node in alive:
                     self._stop(node, "timeout", f"the run exceeded its wall-clock budget of {limits.wall_s:g} s")
                 alive = []
+            # The world runs to the scenario's end even after every node has gone: a robot left moving is seen moving.
             horizon = self.end_ns
-            if not alive:
-                settle = (self.last_exit_ns or self.world.time_ns) + _ns(self.spec.settle_s)
-                horizon = min(horizon, settle)
             t = self.world.time_ns
             pending_now = any(n.deliveries for n in alive)
             if pending_now:

@@ -55,8 +55,6 @@ class RunSpec:
     name: str = "nominal"
     # Sim seconds a node gets after Ctrl+C before SIGTERM, then before SIGKILL.
     shutdown_grace_s: float = 5.0
-    # Sim seconds the world keeps running after the last node has gone, so a robot left moving is seen moving.
-    settle_s: float = 5.0
 
 
 @dataclass
