@@ -100,7 +100,8 @@ def _criterion(
         passed=credit >= PASS_CREDIT,
         visibility=criterion.visibility,
         feedback=feedback,
-        measured={k: _json_value(v) for k, v in worst.measured.items()},
+        # The criterion's own quantity first: short views (the console table) show only that one.
+        measured={k: _json_value(v) for k, v in sorted(worst.measured.items(), key=lambda kv: kv[0] != criterion.quantity)},
         scenario=worst.scenario,
     )
 

@@ -31,7 +31,7 @@ def report_table(report: SubmissionReport) -> Table:
                 Text(task_cell),
                 Text(f"{mark} {criterion.title or criterion.id}", style=style),
                 fmt_points(criterion.score, criterion.max_score),
-                Text(measured_text(criterion.measured)),
+                Text(measured_text(criterion.measured, limit=1)),
                 Text(criterion.feedback.splitlines()[0] if criterion.feedback else ""),
             )
             task_cell = ""

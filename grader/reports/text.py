@@ -34,8 +34,11 @@ def fmt_points(score: float, max_score: float) -> str:
     return f"{fmt_number(float(score))} / {fmt_number(float(max_score))}"
 
 
-def measured_text(measured: dict[str, float | int | str | bool | None]) -> str:
-    """Measured values, each paired with its `expected_<name>` entry when the rubric gave one."""
+def measured_text(measured: dict[str, float | int | str | bool | None], limit: int | None = None) -> str:
+    """Measured values, each paired with its `expected_<name>` entry when the rubric gave one.
+
+    Scoring puts the criterion's own quantity first, so ``limit=1`` gives the one number a console row needs.
+    """
     parts = []
     for name, value in measured.items():
         if name.startswith(EXPECTED_PREFIX) and name[len(EXPECTED_PREFIX):] in measured:
@@ -46,7 +49,7 @@ def measured_text(measured: dict[str, float | int | str | bool | None]) -> str:
         if expected is not None:
             text += f" (expected {fmt_number(expected)}{unit})"
         parts.append(text)
-    return ", ".join(parts)
+    return ", ".join(parts[:limit])
 
 
 def split_unit(name: str) -> tuple[str, str]:
