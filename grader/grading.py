@@ -7,13 +7,12 @@ from pathlib import Path
 
 from grader.recording import Recording, RecordingError
 from grader.report import SubmissionReport, TaskReport
-from grader.rubric import Node, Rubric, Scenario as RubricScenario, load_rubrics
+from grader.rubric import Node, Rubric, load_rubrics
 from grader.runtime import NodeSpec, RunSpec, ScriptNotFound, check_script, find_script
 from grader.runtime.scripts import candidates
 from grader.runtime.session import RunError, run
 from grader.scoring import score_task
 from grader.submission import SubmissionError, open_submission
-from sim import Scenario
 
 __all__ = ["SubmissionError", "detect_tasks", "grade_submission", "grade_task"]
 
@@ -50,10 +49,6 @@ def _node_spec(script: Path, node: Node) -> NodeSpec:
     return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace)
 
 
-def _sim_scenario(scenario: RubricScenario) -> Scenario:
-    return Scenario.model_validate(scenario.model_dump(exclude={"name", "description"}))
-
-
 def grade_task(folder: Path, rubric: Rubric, out_dir: Path, progress: Progress | None = None) -> TaskReport:
     """Run every scenario of one rubric on the submission in `folder` and score the recordings."""
     try:
@@ -78,7 +73,7 @@ def grade_task(folder: Path, rubric: Rubric, out_dir: Path, progress: Progress |
             progress(f"{rubric.id}: scenario {scenario.name}")
         mcap = task_dir / f"{scenario.name}.mcap"
         try:
-            result = run(RunSpec(scenario=_sim_scenario(scenario), nodes=nodes, name=scenario.name),
+            result = run(RunSpec(scenario=scenario, nodes=nodes, name=scenario.name),
                          mcap, task_dir / f"{scenario.name}.log")
             recordings[scenario.name] = Recording.open(mcap)
         except (RunError, RecordingError) as exc:

@@ -19,6 +19,7 @@ from grader.metrics import METRICS, MetricParams
 from grader.metrics.facts import FACTS
 from grader.report import Visibility
 from grader.tolerance import Sigmoid, ToleranceError, check
+from sim import Scenario as WorldScenario
 
 RUBRICS_ENV = "ROSGRADE_RUBRICS"
 DEFAULT_DIR = Path(__file__).resolve().parent.parent / "rubrics"  # the `rubrics` package next to `grader`
@@ -40,49 +41,11 @@ class _Model(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
 
-class Pose(_Model):
-    """A planar pose in the world frame: metres and radians."""
-
-    x: float = 0.0
-    y: float = 0.0
-    yaw: float = Field(0.0, ge=-2 * math.pi, le=2 * math.pi)
-
-
-class Imperfections(_Model):
-    """Odometry imperfections the world simulates (fractions: 0.01 is 1 %)."""
-
-    wheel_radius_error: float = Field(0.0, gt=-0.5, lt=0.5)
-    slip: float = Field(0.0, ge=0.0, lt=1.0)
-
-
-class ScriptedCommand(_Model):
-    """A velocity the grader's driver gives the robot from ``t`` seconds after start (for subscriber-only tasks)."""
-
-    t: float = Field(ge=0.0)
-    linear: float = 0.0
-    angular: float = 0.0
-
-
-class Scenario(_Model):
-    """One run of the node; the fields mirror ``sim.Scenario`` plus a name and a description for feedback."""
+class Scenario(WorldScenario):
+    """One run of the node: the world's scenario (``sim.Scenario``) plus a name and a description for feedback."""
 
     name: str = Field(pattern=_ID)
     description: str = ""
-    robot: str
-    base_mode: str | None = None  # None: the robot profile's default base driver
-    initial_pose: Pose = Pose()
-    start_time: float = Field(0.0, ge=0.0)  # sim time (s) when the node starts
-    duration: float = Field(gt=0.0)  # s after start until the recording ends
-    shutdown_at: float | None = Field(None, gt=0.0)  # s after start at which the grader sends Ctrl+C
-    seed: int = 0
-    imperfections: Imperfections = Imperfections()
-    script: list[ScriptedCommand] = []
-
-    @model_validator(mode="after")
-    def _shutdown_inside(self) -> Scenario:
-        if self.shutdown_at is not None and self.shutdown_at >= self.duration:
-            raise ValueError(f"shutdown_at ({self.shutdown_at}) must be less than duration ({self.duration})")
-        return self
 
 
 class Node(_Model):

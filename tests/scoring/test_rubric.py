@@ -82,7 +82,7 @@ def test_odom_subscriber_script_crosses_pi() -> None:
         for cmd in s.script:
             yaw += w * (cmd.t - t_prev)
             headings.append(yaw)
-            t_prev, w = cmd.t, cmd.angular
+            t_prev, w = cmd.t, cmd.angular[2]
         assert max(abs(h) for h in headings) > math.pi, s.name
 
 
@@ -108,7 +108,7 @@ def test_minimal_instructor_rubric_loads(tmp_path: Path) -> None:
         ('quantity = "radius"', 'quantity = "radious"', "criteria[0] ('radius')", "expected one of"),
         ("points = 2", "ponts = 2", "criteria[0] ('radius').points", "('radius').ponts: unknown field"),
         ('title = "Loop radius"\n', "", "criteria[0] ('radius').title", "required field is missing"),
-        ("shutdown_at = 25.0", "shutdown_at = 35.0", "scenarios[0] ('nominal')", "less than duration"),
+        ("shutdown_at = 25.0", "shutdown_at = 35.0", "scenarios[0] ('nominal')", "after the end of the run"),
         ("tolerance = {", 'params = { settle = 2 }\ntolerance = {', "criteria[0] ('radius')", "settle"),
     ],
 )

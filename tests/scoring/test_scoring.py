@@ -150,7 +150,7 @@ def test_odom_subscriber_prints_scored_against_odometry() -> None:
     rubric = RUBRICS["odom_subscriber"]
     runs = {}
     for s in rubric.scenarios:
-        script = [(1.0, 0.0, 0.0)] + [(b.t - a.t, a.linear, a.angular) for a, b in zip(s.script, s.script[1:])]
+        script = [(1.0, 0.0, 0.0)] + [(b.t - a.t, a.linear[0], a.angular[2]) for a, b in zip(s.script, s.script[1:])]
         script.append((s.duration - s.script[-1].t, 0.0, 0.0))
         odom = path(script, s.initial_pose.x, s.initial_pose.y, s.initial_pose.yaw, s.start_time)
         lines = [OutputLine(float(t) + 0.002, "stdout", f"x={x:.2f} y={y:.2f} yaw={np.degrees(a):.1f}")
