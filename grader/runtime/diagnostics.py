@@ -13,6 +13,15 @@ def _count(n: int, what: str) -> str:
     return f"{n} {what}{'' if n == 1 else 's'}"
 
 
+def _location(exc: dict) -> str:
+    """' at file line N (`code`)' for the student's innermost frame, or ''."""
+    if not exc.get("frames"):
+        return ""
+    last = exc["frames"][-1]
+    where = f" at {last.get('file', '?')} line {last.get('line', '?')}"
+    return where + (f" (`{last['text']}`)" if last.get("text") else "")
+
+
 def diagnose(session: Session) -> list[str]:
     """Findings for every node of a finished session, most useful first."""
     world = session.world
@@ -54,13 +63,10 @@ def diagnose(session: Session) -> list[str]:
                              f"{available}).")
         if state.exception:
             exc = state.exception
-            where = ""
-            if exc.get("frames"):
-                last = exc["frames"][-1]
-                where = f" at {last.get('file', '?')} line {last.get('line', '?')}"
-                if last.get("text"):
-                    where += f" (`{last['text']}`)"
-            notes.append(f"{label} stopped with an uncaught {exc.get('type')}{where}: {exc.get('message')}")
+            notes.append(f"{label} stopped with an uncaught {exc.get('type')}{_location(exc)}: {exc.get('message')}")
+        for exc in state.caught:
+            notes.append(f"{label} raised {exc.get('type')} in a {exc['where']}{_location(exc)}: {exc.get('message')} "
+                         "(rospy printed the traceback and carried on)")
         if state.output_truncated:
             notes.append(f"{label} printed more than the output limit; the rest was discarded.")
         if node.outcome.status != "exited":

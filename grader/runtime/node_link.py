@@ -74,7 +74,8 @@ class NodeState:
     disable_signals: bool = False
     publishers: dict[int, Endpoint] = field(default_factory=dict)
     subscribers: dict[int, Endpoint] = field(default_factory=dict)
-    exception: dict | None = None
+    exception: dict | None = None  # the uncaught exception that ended the node, if any
+    caught: list[dict] = field(default_factory=list)  # exceptions rospy printed and carried on from (callbacks, hooks)
     output_bytes: int = 0
     output_truncated: bool = False
 
@@ -210,8 +211,13 @@ class NodeLink:
             return LogLine(level, _field(obj, "msg", str), str(obj.get("name", st.name or "")),
                            str(obj.get("file", "")), str(obj.get("function", "")), int(obj.get("line") or 0))
         if kind == ch.EXCEPTION:
-            st.exception = {"type": str(obj.get("type", ""))[:200], "message": str(obj.get("message", ""))[:2000],
-                            "frames": [f for f in obj.get("frames", [])[:50] if isinstance(f, dict)]}
+            where = str(obj.get("where", "uncaught"))[:40]
+            info = {"type": str(obj.get("type", ""))[:200], "message": str(obj.get("message", ""))[:2000],
+                    "frames": [f for f in obj.get("frames", [])[:50] if isinstance(f, dict)], "where": where}
+            if where == "uncaught":
+                st.exception = info
+            elif len(st.caught) < 20:
+                st.caught.append(info)
             return None
         raise ProtocolViolation(f"frame {ch.KIND_NAMES.get(kind, kind)} is not allowed here")
 

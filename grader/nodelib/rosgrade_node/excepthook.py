@@ -26,8 +26,11 @@ def type_name(exc_type: type) -> str:
     return exc_type.__qualname__ if module == "builtins" else f"{module}.{exc_type.__qualname__}"
 
 
-def report(exc_type: type, exc: BaseException | None, tb) -> None:
-    """Send one EXCEPTION frame describing ``exc`` (no printing: the caller prints the traceback)."""
+def report(exc_type: type, exc: BaseException | None, tb, where: str = "uncaught") -> None:
+    """Send one EXCEPTION frame describing ``exc`` (no printing: the caller prints the traceback).
+
+    ``where`` is "uncaught" (it ended a thread) or what rospy caught it in ("callback", "shutdown hook").
+    """
     if runtime.link is None:
         return
     frames = [{"file": f.filename, "line": f.lineno, "function": f.name, "text": f.line or ""}
@@ -36,12 +39,13 @@ def report(exc_type: type, exc: BaseException | None, tb) -> None:
         "type": type_name(exc_type),
         "message": str(exc)[:_MAX_MESSAGE] if exc is not None else "",
         "frames": frames[-_MAX_FRAMES:],
+        "where": where,
     })
 
 
-def report_current() -> None:
-    """Report the exception being handled right now."""
-    report(*sys.exc_info())
+def report_current(where: str) -> None:
+    """Report the exception being handled right now, which rospy caught in ``where``."""
+    report(*sys.exc_info(), where=where)
 
 
 def _excepthook(exc_type, exc, tb) -> None:

@@ -79,7 +79,7 @@ def signal_shutdown(reason: str) -> None:
             hook()
         except BaseException:
             traceback.print_exc()
-            excepthook.report_current()
+            excepthook.report_current("shutdown hook")
     _client_hooks.clear()
     _shutdown_flag = True
     for internal in _internal_hooks:

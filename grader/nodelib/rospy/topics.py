@@ -180,7 +180,7 @@ class Subscriber(Topic):
         msg.deserialize(data)
         msg._connection_header = {"callerid": _PUBLISHER_CALLERID, "md5sum": self.md5sum, "topic": self.resolved_name,
                                   "type": self.type, "message_definition": self.data_class._full_text,
-                                  "tcp_nodelay": "0", "latching": "0"}
+                                  "latching": "0"}
         callback = self.callback
         if callback is None:
             return
@@ -190,7 +190,7 @@ class Subscriber(Topic):
             else:
                 callback(msg, self.callback_args)
         except Exception:
-            excepthook.report_current()
+            excepthook.report_current("callback")
             core.logerr("bad callback: %s\n%s" % (stable_repr(callback), traceback.format_exc()))
 
 
