@@ -31,15 +31,14 @@ _SYSTEM_DIRS = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32")
 _DROP_FAILED_EXIT = 126
 ENV_DISABLE = "ROSGRADE_NO_SANDBOX"  # "1": run nodes with rlimits only (debugging the grader)
 
-# Runs inside bwrap as root: chown-free private home, then setgid/setuid to the node's uid and exec the node.
+# Runs inside bwrap as root: setgid/setuid to the node's uid and exec the node.
 # It runs with -I -S (no site, no environment-driven imports), so nothing of the student's can run before the drop.
 _WRAPPER = (
     "import os,sys\n"
     "u=int(sys.argv[1])\n"
-    "os.chmod(sys.argv[2],0o1777)\n"
     "os.setgroups([]);os.setgid(u);os.setuid(u)\n"
     "if os.getuid()!=u or os.geteuid()!=u or os.getegid()!=u:os._exit(%d)\n"
-    "os.execv(sys.argv[3],sys.argv[3:])\n" % _DROP_FAILED_EXIT
+    "os.execv(sys.argv[2],sys.argv[2:])\n" % _DROP_FAILED_EXIT
 )
 
 
@@ -72,6 +71,7 @@ class Plan:
     uid: int | None = None
     sandboxed: bool = False
     notes: list[str] = field(default_factory=list)
+    staged: Path | None = None  # a readable copy of the student's package, removed when the node is closed
 
 
 _lock = threading.Lock()
@@ -139,12 +139,29 @@ def base_args(root: bool) -> list[str]:
     return args + ["--proc", "/proc", "--dev", "/dev"]
 
 
+def _parents(args: list[str], path: str) -> None:
+    """Create the folders above path as 0755 (bwrap would make them 0700: unreadable once the node drops root)."""
+    dirs = {args[i + 1] for i, a in enumerate(args[:-1]) if a == "--dir"}
+    mounts = {args[i + 2] for i, a in enumerate(args[:-2]) if a in ("--ro-bind", "--bind")}
+    for parent in (str(p) for p in reversed(Path(path).parents) if str(p) != "/"):
+        if parent in dirs or parent in mounts or any(parent.startswith(m + "/") for m in mounts):
+            continue
+        args += ["--perms", "0755", "--dir", parent]
+        dirs.add(parent)
+
+
+def _ro_bind(args: list[str], source: str, target: str | None = None) -> None:
+    target = target or source
+    _parents(args, target)
+    args += ["--ro-bind", source, target]
+
+
 def _bind_path(args: list[str], path: str) -> None:
     """Read-only bind of path (a symlink is recreated as a symlink, so /lib -> usr/lib keeps working)."""
     if os.path.islink(path):
         args += ["--symlink", os.readlink(path), path]
     elif os.path.exists(path):
-        args += ["--ro-bind", path, path]
+        _ro_bind(args, path)
 
 
 def system_binds() -> list[str]:
@@ -161,7 +178,7 @@ def system_binds() -> list[str]:
         if not any(real == p or real.startswith(p + "/") for p in ("/usr", *prefixes)):
             prefixes.append(real)
     for path in sorted(set(prefixes)):
-        args += ["--ro-bind", path, path]
+        _ro_bind(args, path)
     return args
 
 
@@ -187,26 +204,55 @@ def readable_by_others(path: Path) -> bool:
         return False
 
 
+def tree_readable(folder: Path) -> bool:
+    """True if every folder below `folder` (itself included) is o+rx and every file o+r."""
+    for root, dirs, files in os.walk(folder):
+        for name in [".", *dirs, *files]:
+            try:
+                mode = os.lstat(os.path.join(root, name)).st_mode
+            except OSError:
+                return False
+            need = stat.S_IROTH | (stat.S_IXOTH if stat.S_ISDIR(mode) else 0)
+            if not stat.S_ISLNK(mode) and mode & need != need:
+                return False
+    return True
+
+
+def readable_copy(folder: Path, into: Path) -> Path:
+    """A copy of folder that anyone may read (bound in the sandbox at the original path, so paths do not change)."""
+    target = into / "package"
+    shutil.copytree(folder, target, symlinks=True)
+    for root, dirs, files in os.walk(target):
+        os.chmod(root, 0o755)
+        for name in files:
+            path = os.path.join(root, name)
+            if not os.path.islink(path):
+                os.chmod(path, os.stat(path).st_mode | 0o444)
+    return target
+
+
 def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int) -> Plan:
     """How to start `command` (an interpreter running `script`) confined; workdir is the node's host folder."""
     cap = detect()
     notes = [cap.note] if cap.note else []
     if cap.bwrap:
-        package = package_folder(script)
-        args = [cap.bwrap, *base_args(cap.root), *system_binds()]
+        package, staged = package_folder(script), None
+        args = [cap.bwrap, *base_args(cap.root), "--size", str(max(1, limits_file_mb) << 20), "--perms", "1777",
+                "--tmpfs", SANDBOX_HOME, *system_binds()]
         nodelib = str(Path(__file__).resolve().parents[1] / "nodelib")
-        args += ["--ro-bind", nodelib, nodelib]
+        _ro_bind(args, nodelib)
         if not (str(package) + "/").startswith(nodelib + "/"):
-            args += ["--ro-bind", str(package), str(package)]
-        args += ["--size", str(max(1, limits_file_mb) << 20), "--perms", "1777", "--tmpfs", SANDBOX_HOME,
-                 "--chdir", SANDBOX_HOME]
+            # Root drops to an unprivileged uid inside: files only root may read are shown through a readable copy.
+            staged = None if not cap.root or tree_readable(package) else readable_copy(package, workdir)
+            _ro_bind(args, str(staged or package), str(package))
+        args += ["--chdir", SANDBOX_HOME]
         uid = None
         if cap.root:
             uid = next_uid()
-            args += ["--", sys.executable, "-I", "-S", "-c", _WRAPPER, str(uid), SANDBOX_HOME, *command]
+            args += ["--", sys.executable, "-I", "-S", "-c", _WRAPPER, str(uid), *command]
         else:
             args += ["--", *command]
-        return Plan(args, cwd=str(workdir), home=SANDBOX_HOME, uid=uid, sandboxed=True, notes=notes)
+        return Plan(args, cwd=str(workdir), home=SANDBOX_HOME, uid=uid, sandboxed=True, notes=notes, staged=staged)
     if cap.root and _is_linux():
         unreadable = [p for p in (script, Path(sys.executable), Path(__file__).resolve().parents[1] / "nodelib")
                       if not readable_by_others(p)]

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import os
 import secrets
+import shutil
 import signal
 import subprocess
 import sys
@@ -184,7 +185,7 @@ class NodeProcess:
                 ns = confine.pid_namespace(pid)
                 if ns is not None and ns != own and ns == self._sandbox_ns:
                     found.add(pid)
-        marker = self.marker.encode()
+        marker = f"{MARKER_ENV}={self.marker}".encode()
         tree = {self.popen.pid}
         parents = {pid: confine.parent_of(pid) for pid in confine.processes()}
         changed = True
@@ -270,6 +271,14 @@ class NodeProcess:
             return -(code - 128)
         return code
 
+    @property
+    def returncode(self) -> int | None:
+        """Like wait(0) without waiting: the exit code once the node has been reaped."""
+        code = self.popen.returncode
+        if code is not None and self.plan.sandboxed and 128 < code < 128 + 65:
+            return -(code - 128)
+        return code
+
     def close(self) -> None:
         """Kill whatever is left of the node and release every descriptor."""
         self.signal_group(signal.SIGKILL)
@@ -280,3 +289,5 @@ class NodeProcess:
             except OSError:
                 pass
         self._raw.close()
+        if self.plan.staged is not None:
+            shutil.rmtree(self.plan.staged, ignore_errors=True)

@@ -23,12 +23,14 @@ from grader.runtime.node_link import (Endpoint, LogLine, NodeExited, NodeLink, N
                                       ProtocolViolation, Publication)
 from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
-from grader.runtime.verdicts import exit_status
+from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from sim import CommandSample, GroundTruthSample, OdometrySample, TransformSample, World
 
-# Real rospy connects a new publisher or subscriber to its peers 49-91 ms after it is created (measured);
-# messages published before that are lost unless latched.
+# Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
+# published before that are lost. A new subscriber to a running publisher (Gazebo's /odom) gets the next message.
 CONNECT_DELAY_NS = 50_000_000
+# Publications that never reached a subscriber are recorded under this prefix, apart from what the robot received.
+LOST_PREFIX = "/rosgrade/lost"
 WORLD_CALLERID = "/gazebo"
 DRIVER_CALLERID = "/rosgrade_driver"
 GROUND_TRUTH_TOPIC = "/ground_truth/odom"
@@ -132,14 +134,15 @@ class Session:
             raise RunError(str(exc)) from None
         link = NodeLink(process.read_fd, process.write_fd, self.catalog, self.spec.limits.silent_wall_s,
                         self.spec.limits.output_bytes)
-        self.nodes.append(_Node(node_spec, process, link, NodeOutcome(script=node_spec.script.name)))
+        self.nodes.append(_Node(node_spec, process, link,
+                                NodeOutcome(script=node_spec.script.name, findings=list(process.notes))))
 
     def _handshake(self, node: _Node) -> None:
         link, node_spec = node.link, node.spec
         t = self.world.time_ns
         try:
             link.handshake({"t_ns": t, "params": {"/use_sim_time": True, **node_spec.params},
-                            "ros_namespace": node_spec.ros_namespace or "/", "wall_epoch": _wall_epoch(t)})
+                            "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t)})
         except (NodeExited, NodeSilent, ProtocolViolation) as exc:
             self._node_failed(node, exc, t)
             return
@@ -152,6 +155,8 @@ class Session:
 
     def _ended(self, node: _Node, status: str, message: str, code: int | None) -> None:
         node.alive = False
+        status, message = refine(status, message, code, node.link.state, node.process, self.spec.limits,
+                                 node.outcome.findings)
         node.outcome.status, node.outcome.message = status, message
         if code is not None:
             node.outcome.exit_code = code if code >= 0 else None
@@ -173,6 +178,8 @@ class Session:
         elif isinstance(exc, NodeSilent):
             self._stop(node, "timeout", f"the node {exc}; it was stopped (an endless loop outside rospy calls, "
                                         "or a blocking call such as input() with nothing to read)")
+        elif isinstance(exc, OutputLimitExceeded):
+            self._stop(node, "killed_by_limit", str(exc))
         else:
             self._stop(node, "protocol_violation", f"the node broke the grader's channel: {exc}")
 
@@ -194,7 +201,8 @@ class Session:
             else:
                 candidates = [horizon, self.world.next_output_ns()]
                 for node in alive:
-                    candidates += [c for c in (node.wake_ns, node.term_ns, node.kill_ns) if c is not None]
+                    term = node.term_ns if node.kill_ns is None else None  # SIGTERM already sent: next is SIGKILL
+                    candidates += [c for c in (node.wake_ns, term, node.kill_ns) if c is not None]
                 if self.shutdown_ns is not None and not self.shutdown_sent and alive:
                     candidates.append(max(self.shutdown_ns, t))
                 t_next = min(candidates)
@@ -220,8 +228,7 @@ class Session:
                     node.process.signal_group(signal.SIGTERM)
                     node.kill_ns = t_next + _ns(1.0)
                     if node.process.wait(0.2) is not None:
-                        self._ended(node, *exit_status(node.process.popen.returncode),
-                                    node.process.popen.returncode)
+                        self._ended(node, *exit_status(node.process.returncode), node.process.returncode)
                         continue
                 due = node.wake_ns is not None and node.wake_ns <= t_next
                 if due or node.deliveries or shutdown:
@@ -236,7 +243,7 @@ class Session:
                 deliveries, node.deliveries = node.deliveries, []
                 link.resume(t, clock, deliveries, shutdown)
             node.wake_ns = link.run_until_wait(t, lambda event: self._node_event(node, event, t))
-        except (NodeExited, NodeSilent, ProtocolViolation) as exc:
+        except (NodeExited, NodeSilent, ProtocolViolation, OutputLimitExceeded) as exc:
             self._node_failed(node, exc, t)
 
     # -- what nodes do -----------------------------------------------------------------------------------------
@@ -245,6 +252,9 @@ class Session:
             self._publication(node, event.endpoint, event.data, t)
         elif isinstance(event, OutputLine):
             self._output(node, event, t)
+            if node.link.state.output_truncated:
+                raise OutputLimitExceeded(f"printed more than its output limit of {self.spec.limits.output_bytes} "
+                                          "bytes; it was stopped")
         elif isinstance(event, LogLine):
             self._recorder.write("/rosout", "rosgraph_msgs/Log",
                                  log_bytes(t, self._next_seq("/rosout"), event.level, node.callerid, event.msg,
@@ -253,15 +263,24 @@ class Session:
                                  t, callerid=node.callerid)
 
     def _connected(self, node: _Node, endpoint: Endpoint, t: int) -> bool:
+        """Whether a publisher created at its registration (or at init_node, if earlier) has connected by t."""
         init_ns = node.link.state.init_ns
         since = max(endpoint.registered_ns, t if init_ns is None else init_ns)
         return t >= since + CONNECT_DELAY_NS
 
     def _publication(self, node: _Node, endpoint: Endpoint, data: bytes, t: int) -> None:
-        self._recorder.write(endpoint.topic, endpoint.type, data, t, callerid=node.callerid, latching=endpoint.latch)
+        if endpoint.topic in (self.world.mode.odometry.topic, GROUND_TRUTH_TOPIC, "/clock", "/rosgrade/stdout",
+                              "/rosgrade/stderr"):  # only the world and the grader speak here: not recorded
+            note = (f"{node.outcome.script} published on {endpoint.topic}, which only the simulated robot and the "
+                    "grader publish; those messages were ignored.")
+            if note not in node.outcome.findings:
+                node.outcome.findings.append(note)
+            return
         if not self._connected(node, endpoint, t):
             endpoint.dropped_before_connect += 1
+            self._recorder.write(LOST_PREFIX + endpoint.topic, endpoint.type, data, t, callerid=node.callerid)
             return
+        self._recorder.write(endpoint.topic, endpoint.type, data, t, callerid=node.callerid, latching=endpoint.latch)
         if endpoint.topic in self.world.command_topics and endpoint.type == TWIST:
             linear, angular = decode_twist(data)
             self.world.command(endpoint.topic, linear=linear, angular=angular)
@@ -269,8 +288,7 @@ class Session:
         for other in self.nodes:
             if other.alive:
                 for sub in other.link.state.subscribers.values():
-                    if (sub.topic == endpoint.topic and sub.type == endpoint.type and not sub.closed
-                            and self._connected(other, sub, t)):
+                    if sub.topic == endpoint.topic and sub.type == endpoint.type and not sub.closed:
                         other.deliveries.append((sub.ident, data))
                         sub.count += 1
 
@@ -306,7 +324,7 @@ class Session:
     def _deliver(self, topic: str, type_name: str, data: bytes, t: int, alive: list[_Node]) -> None:
         for node in alive:
             for sub in node.link.state.subscribers.values():
-                if sub.topic == topic and sub.type == type_name and not sub.closed and self._connected(node, sub, t):
+                if sub.topic == topic and sub.type == type_name and not sub.closed:
                     node.deliveries.append((sub.ident, data))
                     sub.count += 1
 
