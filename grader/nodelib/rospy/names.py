@@ -75,8 +75,8 @@ def resolve_in(name: str, caller_id: str, remappings: dict[str, str] | None = No
     if name[0] == SEP:
         resolved = name
     elif is_private(name):
-        # Joined, not canonicalised, as rospy does: '~' alone resolves to the node's name with a trailing '/'.
-        resolved = caller_id + SEP + name[1:]
+        # '~' alone resolves to the node's name with a trailing '/', as rospy's ns_join gives it.
+        resolved = canonicalize_name(caller_id + SEP + name[1:]) if name[1:] else caller_id + SEP
     else:
         resolved = namespace(caller_id) + name
     if remappings and resolved in remappings:
