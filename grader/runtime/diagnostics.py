@@ -69,7 +69,7 @@ def diagnose(session: Session) -> list[str]:
                          "(rospy printed the traceback and carried on)")
         if state.output_truncated:
             notes.append(f"{label} printed more than the output limit; the rest was discarded.")
-        if node.outcome.status != "exited":
+        if node.outcome.status != "exited" or state.name is None:
             notes.append(f"{label}: {node.outcome.message}.")
         notes.extend(node.outcome.findings)
     return notes

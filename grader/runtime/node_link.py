@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import select
 import time
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -78,6 +79,7 @@ class NodeState:
     caught: list[dict] = field(default_factory=list)  # exceptions rospy printed and carried on from (callbacks, hooks)
     output_bytes: int = 0
     output_truncated: bool = False
+    stderr_tail: deque = field(default_factory=lambda: deque(maxlen=4))  # last lines, for start-up failures
 
 
 _LOG_LEVELS = {1, 2, 4, 8, 16}
@@ -233,7 +235,10 @@ class NodeLink:
         buf += text
         *lines, rest = bytes(buf).split(b"\n")
         self._partial[stream] = bytearray(rest)
-        return [OutputLine(stream, line.decode("utf-8", "replace")) for line in lines] or None
+        out = [OutputLine(stream, line.decode("utf-8", "replace")) for line in lines]
+        if stream == 2:
+            st.stderr_tail.extend(line.text for line in out if line.text.strip())
+        return out or None
 
     def flush_output(self) -> list[OutputLine]:
         """Lines left without a newline when the node ended."""

@@ -124,6 +124,7 @@ class NodeProcess:
         env = node_environment(spec, f"{grader_to_node_r},{node_to_grader_w}", self.plan.home)
         env[MARKER_ENV] = self.marker
         pairs = rlimit_pairs(limits, nproc)
+        self.raw_path = raw_output
         self._raw = open(raw_output, "wb")
         try:
             self.popen = subprocess.Popen(

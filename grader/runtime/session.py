@@ -157,6 +157,13 @@ class Session:
         node.alive = False
         status, message = refine(status, message, code, node.link.state, node.process, self.spec.limits,
                                  node.outcome.findings)
+        if node.link.state.init_ns is None:
+            # Python itself (or the sandbox) may have said why on stderr before any rospy call.
+            for line in node.link.flush_output():
+                self._output(node, line, self.world.time_ns)
+            said = " | ".join(node.link.state.stderr_tail) or _tail(node.process.raw_path)
+            if said:
+                message = f"{message}; before any rospy call it printed: {said}"
         node.outcome.status, node.outcome.message = status, message
         if code is not None:
             node.outcome.exit_code = code if code >= 0 else None
@@ -356,6 +363,15 @@ class Session:
             "diagnostics": json.dumps(result.diagnostics),
             "topics": json.dumps(result.topics),
         }
+
+
+def _tail(path: Path, limit: int = 600) -> str:
+    """The last lines a process wrote to its raw output file, on one line."""
+    try:
+        text = path.read_bytes()[-limit:].decode("utf-8", "replace")
+    except OSError:
+        return ""
+    return " | ".join(line.strip() for line in text.splitlines() if line.strip())
 
 
 def _wall_epoch(t_ns: int) -> float:
