@@ -263,7 +263,8 @@ def cmd_score(args: argparse.Namespace) -> int:
         if recording.ground_truth() is None:
             err.print(f"{path} has no ground truth: it is scored from its odometry only.", highlight=False, markup=False)
         recordings[scenario] = recording
-    task = _module("grader.scoring").score_task(rubrics[args.task], recordings)
+    # Only the scenarios given are scored: the rubric's other scenarios were not recorded here.
+    task = _module("grader.scoring").score_task(rubrics[args.task].restricted_to(recordings), recordings)
     if not task.recordings:
         task = task.model_copy(update={"recordings": [str(p) for p in args.recordings]})
     report = SubmissionReport(submission=", ".join(str(p) for p in args.recordings), tasks=[task]).total()

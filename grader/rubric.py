@@ -10,6 +10,7 @@ import os
 import re
 import string
 import tomllib
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any, Literal
 
@@ -240,6 +241,16 @@ class Rubric(_Model):
     def max_score(self) -> float:
         """Sum of the criteria's points."""
         return float(sum(c.points for c in self.criteria))
+
+    def restricted_to(self, scenario_names: Iterable[str]) -> Rubric:
+        """This rubric on the named scenarios only (re-scoring a subset of recordings, or a bag from a real robot);
+        criteria that are scored on none of them are left out."""
+        names = set(scenario_names)
+        criteria = [c.model_copy(update={"scenarios": None if c.scenarios is None else
+                                         [s for s in c.scenarios if s in names]})
+                    for c in self.criteria if c.scenarios is None or names & set(c.scenarios)]
+        return self.model_copy(update={"scenarios": [s for s in self.scenarios if s.name in names],
+                                       "criteria": criteria})
 
     def scenario_list(self, criterion: Criterion) -> list[Scenario]:
         """The scenarios a criterion is scored on, in rubric order."""

@@ -142,7 +142,9 @@ class Session:
         t = self.world.time_ns
         try:
             link.handshake({"t_ns": t, "params": {"/use_sim_time": True, **node_spec.params},
-                            "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t)})
+                            "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t),
+                            # In its own PID namespace the node's pid is the same on every run.
+                            "stable_pid": node.process.plan.sandboxed})
         except (NodeExited, NodeSilent, ProtocolViolation) as exc:
             self._node_failed(node, exc, t)
             return

@@ -40,6 +40,7 @@ def start(channel: str) -> None:
     runtime.link = link
     runtime.scheduler = Scheduler(link, t_ns)
     runtime.params = params
+    runtime.stable_pid = bool(start_msg.get("stable_pid"))
     runtime.wall_epoch_ns = round(wall_epoch * 1e9)
     runtime.ros_namespace = str(start_msg.get("ros_namespace") or "")
     if runtime.ros_namespace:

@@ -25,14 +25,8 @@ _STAND_IN_PID = 4242
 
 def _anonymous_pid() -> int:
     """os.getpid() where it is the same on every run (the grader gave the node its own PID namespace)."""
-    try:
-        with open("/proc/self/status", encoding="ascii", errors="replace") as status:
-            for line in status:
-                if line.startswith("NSpid:"):
-                    return os.getpid() if len(line.split()) > 2 else _STAND_IN_PID
-    except OSError:
-        pass
-    return _STAND_IN_PID
+    return os.getpid() if runtime.stable_pid else _STAND_IN_PID
+
 
 _init_node_args: tuple | None = None
 

@@ -17,6 +17,9 @@ def mover():
     drive_time = 4.0      # 0.25 m/s for 4 s = 1 m
     turn_time = 3.1416    # 0.5 rad/s for pi/2 / 0.5 s = 90 degrees
     state = "forward"
+    # with use_sim_time the clock is 0 until the first /clock message arrives
+    while rospy.Time.now().to_sec() == 0 and not rospy.is_shutdown():
+        rate.sleep()
     start = rospy.Time.now().to_sec()
     while not rospy.is_shutdown():
         now = rospy.Time.now().to_sec()
