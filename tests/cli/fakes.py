@@ -111,13 +111,18 @@ def rubric_module() -> types.ModuleType:
     def criterion(cid: str, title: str, points: float, visibility: str = "visible") -> SimpleNamespace:
         return SimpleNamespace(id=cid, title=title, points=points, visibility=visibility)
 
+    def rubric(**fields: Any) -> SimpleNamespace:
+        made = SimpleNamespace(**fields)
+        made.restricted_to = lambda names: made  # the fake scoring ignores scenarios
+        return made
+
     rubrics = {
-        "move_circle": SimpleNamespace(
+        "move_circle": rubric(
             id="move_circle", title="Move in a circle", max_score=10.0, robot="turtlebot3_waffle",
             criteria=[criterion("radius", "Circle radius", 4), criterion("speed_limit", "Stays within speed limits", 3),
                       criterion("stops", "Stops on Ctrl+C", 3, "hidden")],
         ),
-        "move_square": SimpleNamespace(
+        "move_square": rubric(
             id="move_square", title="Drive a square", max_score=10.0, robot="turtlebot3_waffle",
             criteria=[criterion("closes", "Returns to the start", 5), criterion("corners", "Four right-angle corners", 5)],
         ),

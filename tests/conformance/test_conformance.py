@@ -26,27 +26,39 @@ from rosgrade_side import run_ours  # noqa: E402
 pytestmark = pytest.mark.slow
 
 
+# Real rospy runs on wall time, so its timing varies from run to run (a SIGINT lands 20 ms late, a callback runs
+# before the first /clock). Ours must match one of its outcomes: a probe is re-run under real ROS, up to this many
+# times in all, before a difference counts.
+REAL_ATTEMPTS = 3
+
+
 class _RealCache:
-    """Runs each probe under real ROS at most once, in one shared master and sim, started on first use."""
+    """Runs each probe under real ROS when first needed (and again on request), in one shared master and sim."""
 
     def __init__(self, tmp: Path) -> None:
         self.tmp = tmp
         self.ros: RealRos | None = None
-        self.results: dict[str, object] = {}
+        self.results: dict[str, list] = {}
+
+    def runs(self, case: Case):
+        """The real runs of `case` so far, then one more each time the caller asks, up to REAL_ATTEMPTS."""
+        runs = self.results.setdefault(case.id, [])
+        for attempt in range(REAL_ATTEMPTS):
+            if attempt == len(runs):
+                runs.append(self._run(case))
+            yield runs[attempt]
 
     def get(self, case: Case):
-        if case.id not in self.results:
-            if self.ros is None:
-                self.ros = RealRos(self.tmp / "realros").__enter__()
-            try:
-                self.results[case.id] = self.ros.run_probe(case.path, case.args, shutdown_at=case.shutdown_at,
-                                                           duration=case.duration, ros_namespace=case.ros_namespace)
-            except RealRosError as exc:
-                self.results[case.id] = exc
-        result = self.results[case.id]
-        if isinstance(result, Exception):
-            pytest.fail(f"the real-ROS harness failed for {case.id}: {result}")
-        return result
+        return next(self.runs(case))
+
+    def _run(self, case: Case):
+        if self.ros is None:
+            self.ros = RealRos(self.tmp / "realros").__enter__()
+        try:
+            return self.ros.run_probe(case.path, case.args, shutdown_at=case.shutdown_at,
+                                      duration=case.duration, ros_namespace=case.ros_namespace)
+        except RealRosError as exc:
+            pytest.fail(f"the real-ROS harness failed for {case.id}: {exc}")
 
     def close(self) -> None:
         if self.ros is not None:
@@ -103,8 +115,16 @@ def _describe(side: str, result) -> str:
 @pytest.mark.realros
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
 def test_same_as_real_rospy(case: Case, real_outputs: _RealCache, our_outputs: _OursCache) -> None:
-    real = real_outputs.get(case)
     ours = our_outputs.get(case)
+    for real in real_outputs.runs(case):
+        problems = _differences(case, real, ours)
+        if not problems:
+            return
+    pytest.fail(f"{case.id}: {len(problems)} difference(s) from real rospy (in each of {REAL_ATTEMPTS} real runs; "
+                "the last shown):\n" + "\n".join(problems) + "\n\n" + _describe("real", real) + _describe("ours", ours))
+
+
+def _differences(case: Case, real, ours) -> list[str]:
     real_ref, our_ref = reference_time(real.stdout), reference_time(ours.stdout)
     problems = []
     problems += diff_streams("stdout", real.stdout, real_ref, ours.stdout, our_ref, case.tolerance_s)
@@ -113,8 +133,7 @@ def test_same_as_real_rospy(case: Case, real_outputs: _RealCache, our_outputs: _
         problems.append(f"exit code: real {_exit_code(real)}, ours {_exit_code(ours)}")
     if case.compare_commands:
         problems += diff_commands(real.commands, real_ref, ours.commands, our_ref, case.tolerance_s)
-    assert not problems, (f"{case.id}: {len(problems)} difference(s) from real rospy:\n" + "\n".join(problems)
-                          + "\n\n" + _describe("real", real) + _describe("ours", ours))
+    return problems
 
 
 def _check_reference(case: Case, result) -> list[str]:
@@ -131,10 +150,15 @@ def _check_reference(case: Case, result) -> list[str]:
 @pytest.mark.parametrize("side", ["ours", pytest.param("real", marks=pytest.mark.realros)])
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
 def test_reference_behaviour(case: Case, side: str, request: pytest.FixtureRequest) -> None:
-    cache = request.getfixturevalue("our_outputs" if side == "ours" else "real_outputs")
-    result = cache.get(case)
-    problems = _check_reference(case, result)
-    assert not problems, f"{case.id} ({side}):\n" + "\n".join(problems) + "\n\n" + _describe(side, result)
+    if side == "ours":
+        results = [request.getfixturevalue("our_outputs").get(case)]
+    else:
+        results = request.getfixturevalue("real_outputs").runs(case)
+    for result in results:
+        problems = _check_reference(case, result)
+        if not problems:
+            return
+    pytest.fail(f"{case.id} ({side}):\n" + "\n".join(problems) + "\n\n" + _describe(side, result))
 
 
 def test_p10_command_stream_ours(our_outputs: _OursCache) -> None:
