@@ -1,6 +1,6 @@
 """The sim clock: one fixed physics step (1/600 s) and exact integer-nanosecond times for step indices.
 
-600 Hz makes the 30, 50 and 100 Hz ticks of the robots' drivers, odometry and ground truth whole numbers of steps
+600 Hz makes the 30, 50 and 100 Hz ticks of the robots' drivers, odometry, ground truth and clock whole numbers of steps
 (20, 12 and 6), so every tick happens on a step and ``step_ns`` is the one place where steps become nanoseconds.
 """
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
 Physics steps at 600 Hz (``sim.clock``). Between ticks it is stepped in one ``mj_step(nstep=n)`` batch; Python runs
 only on ticks: the control tick (latch the command, run the base driver, set the servo targets), the odometry and /tf
-ticks and the 100 Hz ground truth. Same scenario → same bits, on one machine and MuJoCo version.
+ticks and the 50 Hz ground truth. Same scenario → same bits, on one machine and MuJoCo version.
 """
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ from sim.profile import RobotProfile, covariance_matrix, load_robot
 from sim.samples import CommandSample, GroundTruthSample, OdometrySample, Sample, TransformSample
 from sim.scenario import Scenario
 
-GROUND_TRUTH_HZ = 100
+GROUND_TRUTH_HZ = 50  # above every odometry rate (30, 50 Hz); each sample is a recorded message
 
 
 class SimError(Exception):
