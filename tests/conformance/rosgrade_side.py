@@ -7,17 +7,9 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from real_ros import Command  # the same /cmd_vel record on both sides
+
 START_TIME_S = 2.0
-
-
-@dataclass
-class Command:
-    """A /cmd_vel message in the recording; t is absolute sim seconds."""
-
-    t: float
-    linear: tuple[float, float, float]
-    angular: tuple[float, float, float]
-    callerid: str
 
 
 @dataclass
