@@ -41,7 +41,6 @@ class Endpoint:
     count: int = 0
     closed: bool = False
     dropped_before_connect: int = 0
-    last_unconnected: bytes | None = None
 
 
 @dataclass
@@ -113,7 +112,6 @@ class NodeLink:
         self._deadline = 0.0
         self._partial = {1: bytearray(), 2: bytearray()}
         self.state = NodeState()
-        self.frames = 0
 
     # -- reading -----------------------------------------------------------------------------------------------
     def _wait_readable(self) -> None:
@@ -146,7 +144,6 @@ class NodeLink:
         self._deadline = time.monotonic() + self._silent_wall_s
         while True:
             kind, payload = self._read()
-            self.frames += 1
             if kind == ch.WAIT:
                 wake = self._json(payload).get("wake_ns")
                 if wake is not None and (not isinstance(wake, int) or isinstance(wake, bool)):

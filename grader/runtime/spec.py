@@ -17,7 +17,6 @@ NodeStatus = Literal[
     "crashed",            # died from a signal it did not ask for (segfault, abort)
     "killed_by_limit",    # exceeded a CPU, memory, process, file-size or output limit
     "protocol_violation",  # sent something that is not a valid frame
-    "failed_to_start",    # could not be started at all
 ]
 
 
@@ -89,8 +88,8 @@ class RunResult:
     @property
     def status(self) -> str:
         """The worst node status, for one-word summaries."""
-        order = ["protocol_violation", "killed_by_limit", "crashed", "timeout", "failed_to_start",
-                 "killed_after_shutdown", "stopped_at_end", "exited"]
+        order = ["protocol_violation", "killed_by_limit", "crashed", "timeout", "killed_after_shutdown",
+                 "stopped_at_end", "exited"]
         statuses = [n.status for n in self.nodes] or ["exited"]
         return min(statuses, key=order.index)
 
