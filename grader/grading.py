@@ -73,7 +73,7 @@ def grade_task(folder: Path, rubric: Rubric, out_dir: Path, progress: Progress |
             progress(f"{rubric.id}: scenario {scenario.name}")
         mcap = task_dir / f"{scenario.name}.mcap"
         try:
-            result = run(RunSpec(scenario=scenario, nodes=nodes, name=scenario.name),
+            result = run(RunSpec(scenario=scenario, nodes=nodes, limits=rubric.limits, name=scenario.name),
                          mcap, task_dir / f"{scenario.name}.log")
             recordings[scenario.name] = Recording.open(mcap)
         except (RunError, RecordingError) as exc:

@@ -20,6 +20,7 @@ from grader.metrics import METRICS, MetricParams
 from grader.metrics.facts import FACTS
 from grader.report import Visibility
 from grader.tolerance import Sigmoid, ToleranceError, check
+from grader.runtime.spec import Limits
 from sim import Scenario as WorldScenario
 
 RUBRICS_ENV = "ROSGRADE_RUBRICS"
@@ -198,6 +199,7 @@ class Rubric(_Model):
     nodes: list[Node] = Field(min_length=1)
     scenarios: list[Scenario] = Field(min_length=1)
     criteria: list[Criterion] = Field(min_length=1)
+    limits: Limits = Limits()  # resource limits for the student's node in every scenario
 
     @model_validator(mode="before")
     @classmethod

@@ -32,6 +32,11 @@ class Limits:
     file_mb: int = 64
     output_bytes: int = 4 * 1024 * 1024
 
+    def __post_init__(self) -> None:
+        for name, value in vars(self).items():
+            if not value > 0:
+                raise ValueError(f"limit {name} must be positive (got {value!r})")
+
 
 @dataclass(frozen=True)
 class NodeSpec:

@@ -166,3 +166,20 @@ def test_conditions_and_safe_rendering() -> None:
     assert not Condition(quantity="gone", min=0.0).holds(values)
     assert render("{radius:.2f} m, {gone:.3f}, {missing}", values) == "1.00 m, None, n/a"
     assert render("{x:.1f}", {"x": math.nan}) == "n/a"
+
+
+def test_limits_table_sets_the_node_limits(tmp_path) -> None:
+    source = (DEFAULT_DIR / "move_circle.toml").read_text()
+    path = tmp_path / "move_circle.toml"
+    path.write_text(source + "\n[limits]\nwall_s = 30.0\nmemory_mb = 256\n")
+    limits = load_rubric(path).limits
+    assert (limits.wall_s, limits.memory_mb, limits.cpu_s) == (30.0, 256, 120.0)
+
+
+@pytest.mark.parametrize(("table", "message"), [("wal_s = 30.0", "limits.wal_s"),
+                                                ("memory_mb = -1", "must be positive")])
+def test_bad_limits_name_the_field(tmp_path, table: str, message: str) -> None:
+    path = tmp_path / "move_circle.toml"
+    path.write_text((DEFAULT_DIR / "move_circle.toml").read_text() + f"\n[limits]\n{table}\n")
+    with pytest.raises(RubricError, match=message):
+        load_rubric(path)
