@@ -17,34 +17,9 @@ import threading
 import time
 from pathlib import Path
 
+from grader.runtime import confine
+
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def _rss_kib(pid: int) -> int:
-    try:
-        for line in Path(f"/proc/{pid}/status").read_text().splitlines():
-            if line.startswith("VmRSS:"):
-                return int(line.split()[1])
-    except OSError:
-        pass
-    return 0
-
-
-def _descendants(root: int) -> list[int]:
-    children: dict[int, list[int]] = {}
-    for entry in Path("/proc").iterdir():
-        if entry.name.isdigit():
-            try:
-                ppid = int(entry.joinpath("stat").read_text().rsplit(")", 1)[1].split()[1])
-            except (OSError, IndexError, ValueError):
-                continue
-            children.setdefault(ppid, []).append(int(entry.name))
-    found, todo = [], [root]
-    while todo:
-        pid = todo.pop()
-        found.append(pid)
-        todo.extend(children.get(pid, []))
-    return found
 
 
 def _is_node(pid: int) -> bool:
@@ -63,9 +38,9 @@ def measure(command: list[str]) -> dict[str, float]:
 
     def sample() -> None:
         while not done.is_set():
-            for pid in _descendants(process.pid):
+            for pid in confine.descendants(process.pid):
                 kind = "node" if _is_node(pid) else "grader"
-                peaks[kind] = max(peaks[kind], _rss_kib(pid))
+                peaks[kind] = max(peaks[kind], confine.rss_kib(pid))
             time.sleep(0.05)
 
     sampler = threading.Thread(target=sample, daemon=True)

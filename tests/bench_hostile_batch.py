@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import csv
 import json
-import os
 import resource
 import shutil
 import subprocess
@@ -22,6 +21,8 @@ import threading
 import time
 from pathlib import Path
 
+from grader.runtime import confine
+
 ROOT = Path(__file__).resolve().parents[1]
 CORPUS = ROOT / "tests" / "adversarial" / "corpus"
 REFERENCE = ROOT / "reference_solutions" / "move_circle.py"
@@ -30,26 +31,8 @@ TOTAL, HOSTILE = 100, 25
 
 def _tree_rss_kb(root: int) -> tuple[int, int]:
     """(sum of RSS over root and all its descendants, number of processes), in KiB, from /proc."""
-    parents: dict[int, int] = {}
-    rss: dict[int, int] = {}
-    for name in os.listdir("/proc"):
-        if not name.isdigit():
-            continue
-        try:
-            with open(f"/proc/{name}/status") as handle:
-                fields = dict(line.split(":", 1) for line in handle if ":" in line)
-        except OSError:
-            continue
-        parents[int(name)] = int(fields.get("PPid", "0"))
-        rss[int(name)] = int(fields.get("VmRSS", "0 kB").split()[0]) if "VmRSS" in fields else 0
-    tree, changed = {root}, True
-    while changed:
-        changed = False
-        for pid, parent in parents.items():
-            if parent in tree and pid not in tree:
-                tree.add(pid)
-                changed = True
-    return sum(rss.get(pid, 0) for pid in tree), len(tree)
+    tree = confine.descendants(root)
+    return sum(confine.rss_kib(pid) for pid in tree), len(tree)
 
 
 def build(folder: Path) -> tuple[list[str], list[str]]:
@@ -126,7 +109,7 @@ def main() -> int:
     print(f"peak memory: {peak['rss_kb'] / 1024:.0f} MiB RSS summed over the grader, its workers and nodes "
           f"(sampled every 0.2 s; at most {peak['processes']} processes); largest single process "
           f"{children.ru_maxrss / 1024:.0f} MiB (getrusage RUSAGE_CHILDREN)")
-    leftovers = subprocess.run(["sh", "-c", f"grep -l ROSGRADE_NODE_MARKER /proc/[0-9]*/environ 2>/dev/null"],
+    leftovers = subprocess.run(["sh", "-c", "grep -l ROSGRADE_NODE_MARKER /proc/[0-9]*/environ 2>/dev/null"],
                                capture_output=True, text=True).stdout.split()
     print(f"node processes left afterwards: {len(leftovers)}")
     if stderr and process.returncode:

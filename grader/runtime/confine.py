@@ -312,6 +312,26 @@ def children_of(pid: int) -> list[int]:
     return [p for p in processes() if parent_of(p) == pid]
 
 
+def descendants(root: int) -> set[int]:
+    """root and every process below it, from one pass over /proc."""
+    children: dict[int, list[int]] = {}
+    for pid in processes():
+        children.setdefault(parent_of(pid), []).append(pid)
+    found, todo = set(), [root]
+    while todo:
+        pid = todo.pop()
+        if pid not in found:
+            found.add(pid)
+            todo.extend(children.get(pid, ()))
+    return found
+
+
+def rss_kib(pid: int) -> int:
+    """Resident memory of pid in KiB (0 when it is gone)."""
+    value = status_fields(pid).get("VmRSS", "").split()
+    return int(value[0]) if value else 0
+
+
 def has_marker(pid: int, marker: bytes) -> bool:
     """True if the process was started with the node's marker in its environment."""
     return marker in _read(f"/proc/{pid}/environ").split(b"\0")

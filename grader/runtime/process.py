@@ -187,16 +187,8 @@ class NodeProcess:
                 if ns is not None and ns != own and ns == self._sandbox_ns:
                     found.add(pid)
         marker = f"{MARKER_ENV}={self.marker}".encode()
-        tree = {self.popen.pid}
-        parents = {pid: confine.parent_of(pid) for pid in confine.processes()}
-        changed = True
-        while changed:
-            changed = False
-            for pid, parent in parents.items():
-                if parent in tree and pid not in tree:
-                    tree.add(pid)
-                    changed = True
-        for pid in parents:
+        tree = confine.descendants(self.popen.pid)
+        for pid in confine.processes():
             if pid == os.getpid():
                 continue
             if (pid in tree and pid != self.popen.pid) or confine.has_marker(pid, marker) \
