@@ -62,6 +62,8 @@ class Scheduler:
         # Counts library calls and blocks; the CPU-time tick yields only when it has not moved.
         self.activity = 0
         self._tick_activity = -1
+        # Set by init_node: before it no callback can run, so no busy wait can be waiting for one.
+        self.node_initialized = False
         self.interrupt_pending: str | None = None
         self.on_interrupt: Callable[[str], None] = _raise_keyboard_interrupt
         self._seq = itertools.count()
@@ -99,18 +101,19 @@ class Scheduler:
 
         Trade-off: a loop that makes no library call (``while self.odom is None: pass``) could otherwise never let
         the callback that ends it run. The timer counts CPU time, so *when* it fires depends on the machine; to keep
-        that out of the recording for ordinary nodes it only acts when the main thread holds the token, is executing
-        student code (not library or stdlib code) and has made no library call since the previous tick. A wait for
+        that out of the recording for ordinary nodes it only acts after init_node, when the main thread holds the
+        token, is executing student code (not library, stdlib or generated ``<...>`` code such as the message classes
+        built at import) and has made no library call since the previous tick. A wait for
         a message then still ends at a deterministic sim time (each tick advances exactly one period until the
         message's batch); only long pure-Python computations see machine-dependent sim time.
         """
-        if not self.holds_token() or not self.in_main_thread():
+        if not self.node_initialized or not self.holds_token() or not self.in_main_thread():
             return
         if self.activity != self._tick_activity:
             self._tick_activity = self.activity
             return
         filename = frame.f_code.co_filename if frame is not None else "<frozen>"
-        if filename.startswith(_LIBRARY_DIRS) or filename.startswith("<frozen"):
+        if filename.startswith(_LIBRARY_DIRS) or filename.startswith("<"):
             return
         self.charge_ns += ch.CLOCK_PERIOD_NS
         self.block(deadline_ns=self.world_ns + self.charge_ns)

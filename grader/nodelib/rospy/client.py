@@ -86,6 +86,7 @@ def init_node(name, argv=None, anonymous=False, log_level=None, disable_rostime=
     # Real rospy's first /clock arrives 4-10 ms after init_node returns: the time reads 0 until the node first
     # blocks (sleep, spin, a Rate), or until its calls have charged a clock period (a busy loop).
     sched.charge_ns = 0
+    sched.node_initialized = True
     if not disable_signals:
         sched.on_interrupt = core.signal_shutdown
         for signum in (signal.SIGINT, signal.SIGTERM):
