@@ -219,7 +219,7 @@ class Session:
                 t_next = horizon
             if t_next > t:
                 for sample in self.world.advance_to(t_next):
-                    self._world_sample(sample, alive)
+                    self._world_sample(sample)
             if t_next >= horizon:
                 return
             shutdown = None
@@ -294,12 +294,7 @@ class Session:
             linear, angular = decode_twist(data)
             self.world.command(endpoint.topic, linear=linear, angular=angular)
             self.received[endpoint.topic] = self.received.get(endpoint.topic, 0) + 1
-        for other in self.nodes:
-            if other.alive:
-                for sub in other.link.state.subscribers.values():
-                    if sub.topic == endpoint.topic and sub.type == endpoint.type and not sub.closed:
-                        other.deliveries.append((sub.ident, data))
-                        sub.count += 1
+        self._deliver(endpoint.topic, endpoint.type, data)
 
     def _output(self, node: _Node, line: OutputLine, t: int) -> None:
         topic = "/rosgrade/stdout" if line.stream == 1 else "/rosgrade/stderr"
@@ -312,16 +307,16 @@ class Session:
         self.seq[topic] = seq + 1
         return seq
 
-    def _world_sample(self, sample: object, alive: list[_Node]) -> None:
+    def _world_sample(self, sample: object) -> None:
         rec = self._recorder
         if isinstance(sample, OdometrySample):
             data = odometry_bytes(sample, self._next_seq(sample.topic))
             rec.write(sample.topic, "nav_msgs/Odometry", data, sample.t_ns, callerid=WORLD_CALLERID)
-            self._deliver(sample.topic, "nav_msgs/Odometry", data, sample.t_ns, alive)
+            self._deliver(sample.topic, "nav_msgs/Odometry", data)
         elif isinstance(sample, TransformSample):
             data = tf_bytes(sample, self._next_seq("/tf"))
             rec.write("/tf", "tf2_msgs/TFMessage", data, sample.t_ns, callerid=WORLD_CALLERID)
-            self._deliver("/tf", "tf2_msgs/TFMessage", data, sample.t_ns, alive)
+            self._deliver("/tf", "tf2_msgs/TFMessage", data)
         elif isinstance(sample, GroundTruthSample):
             data = ground_truth_bytes(sample, self._next_seq(GROUND_TRUTH_TOPIC),
                                       child_frame_id=self.world.mode.odometry.child_frame_id)
@@ -330,8 +325,11 @@ class Session:
             rec.write(sample.topic, TWIST, twist_bytes(sample.linear, sample.angular), sample.t_ns,
                       callerid=DRIVER_CALLERID)
 
-    def _deliver(self, topic: str, type_name: str, data: bytes, t: int, alive: list[_Node]) -> None:
-        for node in alive:
+    def _deliver(self, topic: str, type_name: str, data: bytes) -> None:
+        """Queue a message for every live subscriber of its topic and type, for the nodes' next batch."""
+        for node in self.nodes:
+            if not node.alive:
+                continue
             for sub in node.link.state.subscribers.values():
                 if sub.topic == topic and sub.type == type_name and not sub.closed:
                     node.deliveries.append((sub.ident, data))
