@@ -14,7 +14,7 @@ from grader.runtime.session import RunError, run
 from grader.scoring import score_task
 from grader.submission import SubmissionError, open_submission
 
-__all__ = ["SubmissionError", "detect_tasks", "grade_submission", "grade_task"]
+__all__ = ["SubmissionError", "grade_submission", "grade_task"]
 
 Progress = Callable[[str], None]
 
@@ -35,13 +35,6 @@ def _locate(folder: Path, node: Node) -> tuple[Path, list[str]]:
 def _present_tasks(folder: Path, rubrics: Mapping[str, Rubric]) -> list[str]:
     return [task for task, rubric in rubrics.items()
             if all(any(candidates(folder, n) for n in _script_names(node)) for node in rubric.nodes)]
-
-
-def detect_tasks(submission: Path, rubrics: Mapping[str, Rubric] | None = None) -> list[str]:
-    """The tasks whose node scripts are present in the submission (a .zip is looked into)."""
-    rubrics = rubrics if rubrics is not None else load_rubrics()
-    with open_submission(submission) as folder:
-        return _present_tasks(folder, rubrics)
 
 
 def _node_spec(script: Path, node: Node) -> NodeSpec:
