@@ -5,6 +5,7 @@ import argparse
 import contextlib
 import importlib
 import json
+import math
 import os
 import sys
 import tempfile
@@ -24,6 +25,7 @@ from grader import __version__
 from grader.report import SubmissionReport
 from grader.reports.folder import ReportFiles
 from grader.reports.table import print_report
+from grader.reports.escape import one_line, plain
 from grader.reports.text import fmt_number, fmt_points, foxglove_help, percent
 
 EXIT_OK = 0
@@ -50,7 +52,8 @@ def _domain_errors() -> tuple[type[Exception], ...]:
 
     errors: list[type[Exception]] = [BatchError, PackageError]
     for module, name in (("grader.grading", "SubmissionError"), ("grader.rubric", "RubricError"),
-                         ("grader.recording", "RecordingError")):
+                         ("grader.recording", "RecordingError"), ("grader.dask_pool", "DaskPoolError"),
+                         ("grader.rubricfile", "RubricFileError")):
         try:
             errors.append(getattr(_module(module), name))
         except (ImportError, AttributeError):  # a module that is not there cannot have raised its error
@@ -81,10 +84,21 @@ def _stdout_to_stderr(active: bool) -> Iterator[None]:
             os.close(saved)
 
 
+# Folders a script sits in that say nothing about whose it is; the submission is named by the folder above.
+_GENERIC_FOLDERS = {"scripts", "src", "nodes", "bin", ""}
+
+
 def default_out(path: Path) -> Path:
-    """rosgrade-out/<name>: the file's stem, the folder's name, or the workspace's name for a `src/` folder."""
+    """rosgrade-out/<submission>: a folder's or zip's name (the workspace's for `src/`), for a script the package or
+    folder it is in, so checking alice/move_circle.py and bob/move_circle.py keeps both (tasks are subfolders)."""
     resolved = path.resolve()
-    name = resolved.parent.name if resolved.name == "src" else resolved.stem if resolved.is_file() else resolved.name
+    if resolved.is_file() and resolved.suffix.lower() == ".py":
+        folder = resolved.parent
+        while folder.name in _GENERIC_FOLDERS and folder != folder.parent:
+            folder = folder.parent
+        name = folder.name
+    else:
+        name = resolved.parent.name if resolved.name == "src" else resolved.stem if resolved.is_file() else resolved.name
     return DEFAULT_OUT / (name or "submission")
 
 
@@ -106,12 +120,25 @@ def check_input(path: Path) -> None:
             raise CliError(f"{path}: expected a .py file, a catkin package, a workspace src/ folder or a .zip")
 
 
-def check_tasks(task_ids: Sequence[str] | None) -> None:
+def rubric_paths(args: argparse.Namespace) -> list[Path]:
+    """The instructor's rubric files (--rubric) and folders (--rubrics), checked to be what they claim to be."""
+    for path in args.rubric or []:
+        if not path.is_file():
+            raise CliError(f"--rubric {path}: no such rubric file (a task's .toml)")
+    for path in args.rubrics or []:
+        if not path.is_dir():
+            raise CliError(f"--rubrics {path}: no such folder of rubric .toml files")
+    return [*(args.rubric or []), *(args.rubrics or [])]
+
+
+def task_table(args: argparse.Namespace) -> dict[str, Any]:
+    """The tasks this command knows: the built-in rubrics plus --rubric files and --rubrics folders."""
+    return dict(_module("grader.rubric").task_table(rubric_paths(args)))
+
+
+def check_tasks(task_ids: Sequence[str] | None, rubrics: dict[str, Any]) -> None:
     """Reject task ids that have no rubric, listing the ones that exist."""
-    if not task_ids:
-        return
-    rubrics = _module("grader.rubric").load_rubrics()
-    unknown = [t for t in task_ids if t not in rubrics]
+    unknown = [t for t in task_ids or () if t not in rubrics]
     if unknown:
         raise CliError(f"unknown task {', '.join(map(repr, unknown))}; known tasks: {', '.join(sorted(rubrics))}")
 
@@ -141,12 +168,25 @@ def _write_platforms(args: argparse.Namespace, report: SubmissionReport, files: 
         err.print(f"GitHub runner result: {target}", highlight=False, markup=False)
 
 
+def _assignment_max(args: argparse.Namespace) -> float | None:
+    """The points the --task tasks are worth (None when no --task named them, or their rubrics cannot be read)."""
+    if not args.task:
+        return None
+    try:
+        rubrics = task_table(args)
+        return float(sum(rubrics[t].max_score for t in args.task))
+    except Exception:  # the failure being reported may be this very rubric: then the maximum is unknown
+        return None
+
+
 def _write_platform_failures(args: argparse.Namespace, message: str, out_dir: Path) -> None:
-    """Valid platform files that explain why nothing could be graded (a missing file is worse than a zero)."""
+    """Valid platform files that explain why nothing could be graded (a missing file is worse than a zero):
+    0 points of the assignment's real maximum, when --task says what the assignment is."""
     from grader.platforms import github, gradescope, junit, prairielearn
 
+    maximum = _assignment_max(args)
     if args.gradescope:
-        gradescope.write_results(args.gradescope, gradescope.gradescope_failure(message))
+        gradescope.write_results(args.gradescope, gradescope.gradescope_failure(message, maximum))
     if args.prairielearn:
         prairielearn.write_results(args.prairielearn, prairielearn.prairielearn_failure(message))
     if args.junit:
@@ -155,17 +195,25 @@ def _write_platform_failures(args: argparse.Namespace, message: str, out_dir: Pa
         target = _env_path("GITHUB_STEP_SUMMARY", out_dir / "github-summary.md")
         target.parent.mkdir(parents=True, exist_ok=True)
         with target.open("a", encoding="utf-8") as handle:
-            handle.write(f"## rosgrade could not grade this submission\n\n{message}\n")
+            handle.write(github.failure_summary(message))
     if args.github_result:
         target = _env_path("GITHUB_OUTPUT", out_dir / "github-output.txt")
         target.parent.mkdir(parents=True, exist_ok=True)
-        github.write_output(target, github.runner_failure(message))
+        github.write_output(target, github.runner_failure(message, maximum or 0.0))
+
+
+def _warn_weak_isolation(err: Console) -> None:
+    """Say before grading (a node might kill the grader before any report exists) when nodes are not confined."""
+    cap = _module("grader.runtime.confine").detect()
+    if not cap.namespaces and cap.note:
+        err.print(Text(f"Warning: {cap.note}", style="yellow"))
 
 
 def cmd_check(args: argparse.Namespace) -> int:
     """Grade one submission, print the table, write the report folder and the platform outputs."""
     from grader.batch import grade_one
     from grader.platforms import gradescope
+    from grader.runtime.cores import available_cores
 
     started = time.monotonic()
     err = Console(stderr=True)
@@ -174,9 +222,11 @@ def cmd_check(args: argparse.Namespace) -> int:
         gradescope.write_results(args.gradescope, gradescope.gradescope_failure(gradescope.UNFINISHED_MESSAGE))
     try:
         check_input(args.path)
-        check_tasks(args.task)
-        with _stdout_to_stderr(args.json), err.status(f"Grading {escape(str(args.path))} …"):
-            report, files = grade_one(args.path, out_dir, args.task)
+        rubrics = task_table(args)
+        check_tasks(args.task, rubrics)
+        _warn_weak_isolation(err)
+        with _stdout_to_stderr(args.json), err.status(f"Grading {escape(one_line(str(args.path)))} …"):
+            report, files = grade_one(args.path, out_dir, args.task, rubrics, jobs=args.jobs or available_cores())
     except (CliError, *_domain_errors()) as exc:
         _write_platform_failures(args, str(exc), out_dir)
         raise CliError(str(exc)) from None
@@ -190,11 +240,16 @@ def cmd_check(args: argparse.Namespace) -> int:
     _write_platforms(args, report, files, time.monotonic() - started, err)
     if args.json:
         print(report.model_dump_json(indent=2))
-        err.print(f"Score {fmt_points(report.score, report.max_score)}; report folder: {out_dir}", highlight=False, markup=False)
+        err.print(Text(plain(f"Score {fmt_points(report.score, report.max_score)}; report folder: {out_dir}")))
     else:
         console = Console()
         print_report(console, report)
         _print_footer(console, report, files)
+    missing = [t.id for t in report.tasks if t.status == "not_found"]
+    if missing:
+        err.print(f"rosgrade: error: no script found for {', '.join(missing)}: nothing was graded for "
+                  f"{'it' if len(missing) == 1 else 'them'} (see the table).", highlight=False, markup=False)
+        return EXIT_ERROR
     if args.fail_under is not None and percent(report) < args.fail_under:
         err.print(f"Score {percent(report):.1f} % is below --fail-under {args.fail_under:g} %.", highlight=False, markup=False)
         return EXIT_BELOW_THRESHOLD
@@ -202,29 +257,36 @@ def cmd_check(args: argparse.Namespace) -> int:
 
 
 def _print_footer(console: Console, report: SubmissionReport, files: ReportFiles) -> None:
-    console.print(f"\nReport: {files.html}  (also {files.markdown.name} and {files.json.name})", highlight=False, markup=False)
-    for note in files.notes:
-        console.print(f"Note: {note}", highlight=False, markup=False)
+    """Where the report is, notes, and how to open a recording (paths hold folder names a student chose: plain)."""
+    lines = [f"\nReport: {files.html}  (also {files.markdown.name} and {files.json.name})"]
+    lines += [f"Note: {note}" for note in files.notes]
     recordings = [r for t in report.tasks for r in t.recordings]
     if recordings:
-        console.print("Recordings: " + ", ".join(recordings), highlight=False, markup=False)
-        for line in foxglove_help(recordings[0]):
-            console.print(line, highlight=False, markup=False)
+        lines += ["Recordings: " + ", ".join(recordings), *foxglove_help(recordings[0])]
+    for line in lines:
+        console.print(Text(plain(line)))
 
 
 def cmd_batch(args: argparse.Namespace) -> int:
-    """Grade a folder of submissions in parallel and write the gradebook."""
+    """Grade a folder of submissions (local processes or Dask) and write the gradebook."""
     from grader.batch import run_batch
 
     err = Console(stderr=True)
-    check_tasks(args.task)
-    result = run_batch(args.dir, args.out, jobs=args.jobs, task_ids=args.task, timeout_s=args.timeout, console=err)
+    _warn_weak_isolation(err)
+    executor = None
+    if args.scheduler or args.dask_workers:
+        executor = _module("grader.dask_pool").dask_pool(args.scheduler, args.dask_workers)
+    result = run_batch(args.dir, args.out, jobs=args.jobs, task_ids=args.task, timeout_s=args.timeout, console=err,
+                       rubric_paths=rubric_paths(args), executor=executor)
     problems = [r for r in result.results if r.effective_status not in ("graded", "pending")]
     err.print(
-        f"{len(result.results)} students: {result.graded_now} graded now, {result.skipped} already done, "
-        f"{len(problems)} with errors or timeouts.\nGrades: {result.grades}\nSummary: {result.summary}",
+        f"{len(result.results)} students: {result.graded_now} graded now, {result.rescored} re-scored from their "
+        f"recordings, {result.skipped} already done, {len(problems)} with errors or timeouts.",
         highlight=False, markup=False,
     )
+    for note in result.notes:
+        err.print(note, highlight=False, markup=False)
+    err.print(f"Grades: {result.grades}\nSummary: {result.summary}", highlight=False, markup=False)
     if result.interrupted:
         err.print("Interrupted: finished reports are kept; run the same command again to continue.", highlight=False, markup=False)
         return EXIT_INTERRUPTED
@@ -248,8 +310,8 @@ def scenario_name(recording: Any, path: Path) -> str:
 def cmd_score(args: argparse.Namespace) -> int:
     """Re-score recordings against a task's rubric without running any code."""
     err = Console(stderr=True)
-    rubric_module, recording_module = _module("grader.rubric"), _module("grader.recording")
-    rubrics = rubric_module.load_rubrics()
+    recording_module = _module("grader.recording")
+    rubrics = task_table(args)
     if args.task not in rubrics:
         raise CliError(f"unknown task {args.task!r}; known tasks: {', '.join(sorted(rubrics))}")
     recordings: dict[str, Any] = {}
@@ -281,19 +343,18 @@ def cmd_tasks(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps([_rubric_dict(r) for r in rubrics.values()], indent=2))
         return EXIT_OK
+    # Three columns that wrap (task with its title and robot, points, criteria): nothing is cut at 80 columns.
     table = Table(title="rosgrade tasks")
-    table.add_column("Task", no_wrap=True)
-    table.add_column("Title", ratio=1)
-    table.add_column("Robot", no_wrap=True)
-    table.add_column("Points", justify="right")
-    table.add_column("Criteria", ratio=2)
+    table.add_column("Task", ratio=2)
+    table.add_column("Points", justify="right", no_wrap=True)
+    table.add_column("Criteria (points)", ratio=3)
     for rubric in rubrics.values():
+        task = Text.assemble((rubric.id, "bold"), "\n", plain(rubric.title), "\n", (f"robot: {rubric.robot}", "dim"))
         criteria = "\n".join(
-            f"{c.id}: {c.title} ({fmt_number(float(c.points))})" + ("" if c.visibility == "visible" else f" [{c.visibility}]")
+            f"• {c.title} ({fmt_number(float(c.points))})" + ("" if c.visibility == "visible" else f" [{c.visibility}]")
             for c in rubric.criteria
         )
-        points = fmt_number(float(rubric.max_score))
-        table.add_row(Text(rubric.id), Text(rubric.title), Text(str(rubric.robot)), points, Text(criteria))
+        table.add_row(task, fmt_number(float(rubric.max_score)), Text(plain(criteria)))
         table.add_section()
     Console().print(table)
     return EXIT_OK
@@ -309,72 +370,248 @@ def _rubric_dict(rubric: Any) -> dict[str, Any]:
     }
 
 
-def _reference_entries(folder: Path) -> list[Path]:
-    if not folder.is_dir():
-        raise CliError(f"{folder} is not a folder")
-    return sorted(p for p in folder.iterdir() if not p.name.startswith((".", "_")) and (p.is_dir() or p.suffix in (".py", ".zip")))
-
-
 def cmd_bench(args: argparse.Namespace) -> int:
-    """Speed on this machine: physics real-time factor, and grading wall time per reference solution."""
+    """Speed on this machine: physics real-time factor, node runs, and a whole check of the reference solutions."""
     err = Console(stderr=True)
+    check_bench = _module("grader.check_bench")
+    figures: dict[str, Any] = {"load_average_before": check_bench.load_average()}
     with err.status("Measuring physics speed …"):
         physics = _module("sim.bench").physics_benchmark(robot=args.robot, sim_seconds=args.seconds)
-    move_circle = args.reference / "move_circle.py" if args.reference else None
-    with err.status("Measuring node runs (40 s of sim time each) …"):
-        runtime = _module("grader.runtime.bench").runtime_benchmark(
-            move_circle if move_circle is not None and move_circle.is_file() else None)
-    rows: list[dict[str, Any]] = []
+    runtime: dict[str, Any] = {}
+    if not args.no_node_runs:
+        move_circle = args.reference / "move_circle.py" if args.reference else None
+        with err.status("Measuring node runs (40 s of sim time each) …"):
+            runtime = _module("grader.runtime.bench").runtime_benchmark(
+                move_circle if move_circle is not None and move_circle.is_file() else None, repeats=args.repeats)
+    checks = []
     if args.reference:
-        grading = _module("grader.grading")
-        with tempfile.TemporaryDirectory(prefix="rosgrade-bench-") as tmp:
-            for entry in _reference_entries(args.reference):
-                with err.status(f"Grading {escape(entry.name)} …"):
-                    started = time.monotonic()
-                    report = grading.grade_submission(entry, Path(tmp) / entry.stem, None).total()
-                    rows.append(
-                        {
-                            "solution": entry.name,
-                            "tasks": [t.id for t in report.tasks],
-                            "score": report.score,
-                            "max_score": report.max_score,
-                            "wall_s": round(time.monotonic() - started, 3),
-                        }
-                    )
+        if not args.reference.exists():
+            raise CliError(f"{args.reference} does not exist; give the reference solutions folder")
+        jobs = args.jobs or _module("grader.runtime.cores").available_cores()
+        for n in dict.fromkeys((1, jobs)):
+            with err.status(f"Checking {escape(str(args.reference))} with -j {n} (best of {args.repeats}) …"):
+                checks.append(check_bench.best_of(args.reference, n, args.repeats))
+    figures["load_average_after"] = check_bench.load_average()
     if args.json:
-        print(json.dumps({"physics": physics, "runtime": runtime, "reference": rows}, indent=2, default=str))
+        print(json.dumps({"physics": physics, "runtime": runtime, "check": [_check_dict(c, physics) for c in checks],
+                          **figures}, indent=2, default=str))
         return EXIT_OK
     console = Console()
-    for title, figures in ((f"physics ({args.robot}, {args.seconds:g} s simulated)", physics),
-                           ("node runs: process start to closed recording", runtime)):
+    tables = [(f"physics ({args.robot}, {args.seconds:g} s simulated)", physics)]
+    if runtime:
+        tables.append(("node runs: process start to closed recording", runtime))
+    for title, values in tables:
         table = Table(title=title)
         table.add_column("Figure")
         table.add_column("Value", justify="right")
-        for key, value in figures.items():
+        for key, value in values.items():
             table.add_row(Text(str(key)), Text(fmt_number(value) if isinstance(value, (int, float)) else str(value)))
         console.print(table)
-    if rows:
-        grading_table = Table(title="grading wall time per reference solution")
-        for column in ("Solution", "Tasks", "Points", "Wall time [s]"):
-            grading_table.add_column(column)
-        for row in rows:
-            points = fmt_points(row["score"], row["max_score"])
-            grading_table.add_row(Text(row["solution"]), Text(", ".join(row["tasks"])), points, f"{row['wall_s']:.2f}")
-        console.print(grading_table)
+    if checks:
+        _print_checks(console, checks, physics)
+    console.print(Text(f"Load average before: {figures['load_average_before']}; after: "
+                       f"{figures['load_average_after']} (on a loaded machine wall times grow; ratios less so)."))
     return EXIT_OK
+
+
+def _check_dict(check: Any, physics: dict[str, Any]) -> dict[str, Any]:
+    return {"jobs": check.jobs, "wall_s": round(check.wall_s, 3), "cpu_s": round(check.cpu_s, 3),
+            "sim_s": round(check.sim_s, 3), "runs": check.runs, "frames": check.frames,
+            "sim_s_per_wall_s": round(check.sim_per_wall, 2), "sim_s_per_cpu_s": round(check.sim_per_cpu, 2),
+            "of_physics_rtf": round(check.sim_per_wall / physics["rtf"], 3),
+            "of_physics_cpu_rtf": round(check.sim_per_cpu / physics["cpu_rtf"], 3) if physics.get("cpu_rtf") else None,
+            "score": check.score, "max_score": check.max_score,
+            "stages_s": {name: round(value, 3) for name, value in check.breakdown()}}
+
+
+def _print_checks(console: Console, checks: list[Any], physics: dict[str, Any]) -> None:
+    """The per-stage breakdown of the -j 1 check, then every -j figure against the physics real-time factor."""
+    single = checks[0]
+    stages = Table(title=f"where the -j 1 check's {single.wall_s:.1f} s go ({single.runs} runs, {single.frames} "
+                         f"node steps, {single.sim_s:.0f} s simulated)")
+    for column in ("Stage", "Seconds", "Share", "Per node step [µs]"):
+        stages.add_column(column, justify="left" if column == "Stage" else "right")
+    for name, seconds in single.breakdown():
+        per_step = f"{seconds / single.frames * 1e6:.0f}" if single.frames else ""
+        stages.add_row(Text(name), f"{seconds:.2f}", f"{seconds / single.wall_s:.0%}", per_step)
+    console.print(stages)
+    summary = Table(title=f"graded sim-s per second against physics alone ({physics['rtf']:.0f}x real time, "
+                          "same run)")
+    for column in ("-j", "Wall [s]", "CPU [s]", "Sim-s / wall-s", "Of physics RTF", "Sim-s / CPU-s",
+                   "Of physics per CPU-s", "Points"):
+        summary.add_column(column, justify="right")
+    cpu_rtf = physics.get("cpu_rtf")
+    for check in checks:
+        summary.add_row(str(check.jobs), f"{check.wall_s:.2f}", f"{check.cpu_s:.2f}", f"{check.sim_per_wall:.1f}",
+                        f"{check.sim_per_wall / physics['rtf']:.2f}", f"{check.sim_per_cpu:.1f}",
+                        f"{check.sim_per_cpu / cpu_rtf:.2f}" if cpu_rtf else "", fmt_points(check.score, check.max_score))
+    console.print(summary)
 
 
 def cmd_gradescope_package(args: argparse.Namespace) -> int:
     """Build the Gradescope autograder zip."""
     from grader.platforms.gradescope_package import build_autograder_zip
 
-    check_tasks(args.task)
-    path = build_autograder_zip(args.task, args.out, timeout_s=args.timeout)
+    from grader.rubricfile import rubric_files
+
+    rubrics = task_table(args)
+    check_tasks(args.task, rubrics)
+    builtin = _module("grader.rubric").load_rubrics()
+    extra = rubric_files(rubrics[t] for t in dict.fromkeys(args.task) if t not in builtin)
+    path = build_autograder_zip(args.task, args.out, timeout_s=args.timeout, extra_rubrics=extra,
+                                max_score=_assignment_max(args))
     Console().print(
         f"Wrote {path} ({path.stat().st_size / 1e6:.1f} MB) for tasks {', '.join(args.task)}. Upload it on "
-        "Gradescope as the autograder zip (Ubuntu 22.04 base); its README.md says what it does and how long it takes.",
+        "Gradescope as the autograder zip (Ubuntu 22.04 or 24.04 base); its README.md says what it does and how long it takes.",
         highlight=False, markup=False,
     )
+    return EXIT_OK
+
+
+def _launch_target(args: argparse.Namespace) -> tuple[Path, dict[str, Path], dict[str, str]]:
+    """The launch file, the packages $(find) sees and the args, from `FILE args...` or `PKG FILE args...`."""
+    from grader.launch import enclosing_package, find_packages
+    from grader.runtime.scripts import candidates
+
+    words = list(args.args)
+    # `roslaunch PKG FILE`: a bare package name (no path, no extension) that is not a file here, then a file name.
+    by_package = (not args.file.exists() and str(args.file).replace("_", "a").isalnum() and bool(words)
+                  and ":=" not in words[0])
+    file_name = words.pop(0) if by_package else None
+    values: dict[str, str] = {}
+    for item in words:
+        name, sep, value = item.partition(":=")
+        if not sep or not name:
+            raise CliError(f"{item!r} is not an arg; pass launch args as name:=value")
+        values[name] = value
+    if by_package:
+        roots = args.packages or [Path.cwd()]
+    else:
+        package = enclosing_package(args.file.resolve())
+        roots = args.packages or ([package.parent] if package else [args.file.resolve().parent])
+    packages: dict[str, Path] = {}
+    for root in roots:
+        packages = find_packages(root) | packages
+    if not by_package:
+        return args.file, packages, values
+    pkg = str(args.file)
+    if pkg not in packages:
+        raise CliError(f"no package named {pkg} under {', '.join(map(str, roots))} (package.xml <name>); "
+                       "pass --packages DIR or the launch file's path")
+    found = candidates(packages[pkg], file_name)
+    if not found:
+        raise CliError(f"no launch file named {file_name} in package {pkg} ({packages[pkg]})")
+    return found[0], packages, values
+
+
+def cmd_launch(args: argparse.Namespace) -> int:
+    """Print what a launch file sets and starts, exactly as `roslaunch --dump-params` / `--nodes` print it."""
+    from grader.launch import LaunchError, dump_params, node_names, read_launch
+
+    file, packages, values = _launch_target(args)
+    try:
+        launch = read_launch(file, values, packages, os.environ)
+    except LaunchError as exc:
+        raise CliError(str(exc)) from None
+    for note in launch.notes:
+        print(f"rosgrade: note: {note}", file=sys.stderr)
+    for world in launch.worlds:
+        print(f"rosgrade: note: {world.where}: {world.package}/{world.file} is simulated by rosgrade ({world.robot} "
+              f"at x={world.x:g}, y={world.y:g}); its Gazebo nodes and parameters are not listed", file=sys.stderr)
+    sys.stdout.write(dump_params(launch) if args.dump_params else node_names(launch))
+    return EXIT_OK
+
+
+def _tolerance_text(tolerance: Any) -> str:
+    """A criterion's tolerance in short words: full credit range, then how far outside credit lasts."""
+    lo, hi = tolerance.bounds
+    full = f"= {lo:g}" if lo == hi else f"in [{lo:g}, {hi:g}]"
+    if tolerance.margin == 0:
+        return f"{full}, else 0"
+    return f"{full} ±{tolerance.margin:g}" + ("" if tolerance.sigmoid == "linear" else f" {tolerance.sigmoid}")
+
+
+def rubric_plan(rubric: Any) -> dict[str, Any]:
+    """What a rubric will run and score, as data (for `rubric check` and its --json)."""
+    return {
+        **_rubric_dict(rubric),
+        "file": str(rubric.source),
+        "nodes": [{"script": n.script, "aliases": n.aliases, "args": n.args} for n in rubric.nodes],
+        "sim_seconds": sum(s.duration for s in rubric.scenarios),
+        "scenarios": [{
+            "name": s.name, "description": s.description, "start_pose": [s.initial_pose.x, s.initial_pose.y,
+                                                                          s.initial_pose.yaw],
+            "start_time": s.start_time, "duration": s.duration, "shutdown_at": s.shutdown_at,
+            "imperfections": s.imperfections.model_dump(), "scripted_commands": len(s.script),
+        } for s in rubric.scenarios],
+        "criteria": [{
+            "id": c.id, "title": c.title, "points": c.points, "visibility": c.visibility, "metric": c.metric,
+            "scored": [{"quantity": q, "tolerance": _tolerance_text(t)}
+                       for q, t in [(c.quantity, c.tolerance), *((p.quantity, p.tolerance) for p in c.parts)]],
+            "scenarios": [s.name for s in rubric.scenario_list(c)], "combine": c.combine, "hints": len(c.hints),
+        } for c in rubric.criteria],
+    }
+
+
+def cmd_rubric_check(args: argparse.Namespace) -> int:
+    """Validate a rubric file and show what it will run and score."""
+    plan = rubric_plan(_module("grader.rubric").load_rubric(args.file))
+    if args.json:
+        print(json.dumps(plan, indent=2))
+        return EXIT_OK
+    console = Console()
+    scripts = ", ".join(" or ".join([n["script"], *n["aliases"]]) for n in plan["nodes"])
+    console.print(f"{plan['file']}: task {plan['id']!r} ({plan['title']}), robot {plan['robot']}, runs {scripts}",
+                  highlight=False, markup=False)
+    runs = Table(title="scenarios (each one run of the node)")
+    for column in ("Scenario", "Start pose (x, y, yaw)", "Clock", "Length", "Ctrl+C", "Other"):
+        runs.add_column(column)
+    for s in plan["scenarios"]:
+        x, y, yaw = s["start_pose"]
+        other = [f"{k} {v:g}" for k, v in s["imperfections"].items() if v]
+        other += [f"{s['scripted_commands']} scripted commands"] if s["scripted_commands"] else []
+        runs.add_row(Text(s["name"]), f"{x:g}, {y:g}, {math.degrees(yaw):.0f}°", f"{s['start_time']:g} s",
+                     f"{s['duration']:g} s", "-" if s["shutdown_at"] is None else f"at {s['shutdown_at']:g} s",
+                     Text(", ".join(other) or "-"))
+    console.print(runs)
+    scored = Table(title="criteria (credit: full in the range, falling to 0 at ± margin outside it)")
+    scored.add_column("Criterion", no_wrap=True)
+    for column in ("Points", "Metric", "Scored on", "Scenarios"):
+        scored.add_column(column)
+    for c in plan["criteria"]:
+        every = len(c["scenarios"]) == len(plan["scenarios"])
+        where = "all" if every else ", ".join(c["scenarios"])
+        scored.add_row(Text(c["id"] + ("" if c["visibility"] == "visible" else f" [{c['visibility']}]")),
+                       fmt_number(float(c["points"])), Text(c["metric"]),
+                       Text("\n".join(f"{p['quantity']} {p['tolerance']}" for p in c["scored"])),
+                       Text(where if c["combine"] == "min" else f"{where} (mean)"))
+    console.print(scored)
+    n_criteria, n_scenarios = len(plan["criteria"]), len(plan["scenarios"])
+    console.print(f"OK: {n_criteria} criteri{'on' if n_criteria == 1 else 'a'} worth "
+                  f"{fmt_number(float(plan['max_score']))} points over {n_scenarios} scenario"
+                  f"{'' if n_scenarios == 1 else 's'} ({plan['sim_seconds']:g} s of simulated time per submission).",
+                  highlight=False, markup=False)
+    return EXIT_OK
+
+
+def cmd_rubric_try(args: argparse.Namespace) -> int:
+    """Grade one submission with a rubric file that need not be installed (an instructor's new task)."""
+    from grader.reports.folder import write_report_folder
+
+    rubric = _module("grader.rubric").load_rubric(args.file)
+    check_input(args.submission)
+    out_dir: Path = args.out or default_out(args.submission)
+    err = Console(stderr=True)
+    with _stdout_to_stderr(args.json), err.status(f"Grading {escape(str(args.submission))} with {rubric.id} …"):
+        report = _module("grader.grading").grade_submission(
+            args.submission, out_dir, [rubric.id], rubrics={rubric.id: rubric}).total()
+        files = write_report_folder(report, out_dir)
+    if args.json:
+        print(report.model_dump_json(indent=2))
+        return EXIT_OK
+    console = Console()
+    print_report(console, report)
+    _print_footer(console, report, files)
     return EXIT_OK
 
 
@@ -392,6 +629,13 @@ def _positive_int(text: str) -> int:
     return value
 
 
+def _add_rubric_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--rubric", action="append", type=Path, metavar="FILE",
+                        help="an instructor's rubric file <task>.toml, beside the built-in tasks (repeatable)")
+    parser.add_argument("--rubrics", action="append", type=Path, metavar="DIR",
+                        help="a folder of instructor rubric files (repeatable)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser for every subcommand."""
     parser = argparse.ArgumentParser(
@@ -403,8 +647,11 @@ def build_parser() -> argparse.ArgumentParser:
     check = commands.add_parser("check", help="grade one submission", description="Grade one submission and explain the result.")
     check.add_argument("path", type=Path, metavar="PATH", help="a .py file, a catkin package, a workspace src/ folder or a .zip")
     check.add_argument("--task", action="append", metavar="ID", help="task to grade (repeatable; default: found from script names)")
-    check.add_argument("--out", type=Path, metavar="DIR", help="report folder (default: rosgrade-out/<name>)")
+    check.add_argument("--out", type=Path, metavar="DIR",
+                       help="report folder (default: rosgrade-out/<submission>, one subfolder per task)")
     check.add_argument("--json", action="store_true", help="print the report JSON on stdout and nothing else")
+    check.add_argument("-j", "--jobs", type=_positive_int, default=None, metavar="N",
+                       help="scenarios run at once (default: the cores this process may use); the report is the same")
     check.add_argument("--fail-under", type=_percent, metavar="PERCENT", help="exit 1 when the score is below PERCENT")
     check.add_argument("--gradescope", type=Path, metavar="FILE", help="write a Gradescope results.json")
     check.add_argument("--prairielearn", type=Path, metavar="FILE", help="write a PrairieLearn results.json")
@@ -413,38 +660,80 @@ def build_parser() -> argparse.ArgumentParser:
                        help="append a Markdown summary to $GITHUB_STEP_SUMMARY (else to the report folder)")
     check.add_argument("--github-result", action="store_true",
                        help="append the Classroom runner result (result=<base64>) to $GITHUB_OUTPUT (else to the report folder)")
+    _add_rubric_options(check)
     check.set_defaults(handler=cmd_check)
 
     batch = commands.add_parser("batch", help="grade a folder of submissions", description="Grade one folder or .zip per student.")
-    batch.add_argument("dir", type=Path, metavar="DIR")
-    batch.add_argument("--out", type=Path, required=True, metavar="OUT")
+    batch.add_argument("dir", type=Path, metavar="DIR", help="folder holding one folder or .zip per student")
+    batch.add_argument("--out", type=Path, required=True, metavar="OUT",
+                       help="folder for the students' reports, grades.csv and summary.md (a rerun resumes there)")
     batch.add_argument("-j", "--jobs", type=_positive_int, default=os.cpu_count() or 1, metavar="N", help="parallel workers")
-    batch.add_argument("--task", action="append", metavar="ID")
+    batch.add_argument("--task", action="append", metavar="ID", help="task to grade for every student (repeatable)")
     batch.add_argument("--timeout", type=float, default=900.0, metavar="SECONDS", help="per-student limit (default 900)")
+    _add_rubric_options(batch)
+    dask = batch.add_mutually_exclusive_group()
+    dask.add_argument("--scheduler", metavar="ADDRESS",
+                      help="grade on a Dask cluster: its scheduler, e.g. tcp://host:8786 (needs rosgrade[dask])")
+    dask.add_argument("--dask-workers", type=_positive_int, metavar="N",
+                      help="grade on a local Dask cluster of N workers (needs rosgrade[dask])")
     batch.set_defaults(handler=cmd_batch)
 
     score = commands.add_parser("score", help="re-score recordings", description="Score recordings without running code.")
-    score.add_argument("recordings", type=Path, nargs="+", metavar="RECORDING")
-    score.add_argument("--task", required=True, metavar="ID")
-    score.add_argument("--json", action="store_true")
+    score.add_argument("recordings", type=Path, nargs="+", metavar="RECORDING",
+                       help="an .mcap from rosgrade, a ROS 1 .bag or a ROS 2 bag, one per scenario")
+    score.add_argument("--task", required=True, metavar="ID", help="the task whose rubric scores the recordings")
+    score.add_argument("--json", action="store_true", help="print the report JSON instead of the table")
+    _add_rubric_options(score)
     score.set_defaults(handler=cmd_score)
 
     tasks = commands.add_parser("tasks", help="list the tasks and their rubrics")
-    tasks.add_argument("--json", action="store_true")
+    tasks.add_argument("--json", action="store_true", help="print the tasks as JSON")
     tasks.set_defaults(handler=cmd_tasks)
 
     bench = commands.add_parser("bench", help="speed figures on this machine")
-    bench.add_argument("--reference", type=Path, metavar="DIR", help="also time grading each reference solution in DIR")
-    bench.add_argument("--robot", default="turtlebot3_waffle")
+    bench.add_argument("--reference", type=Path, metavar="DIR",
+                       help="also time a whole check of DIR (e.g. reference_solutions): per stage, -j 1 and -j N")
+    bench.add_argument("-j", "--jobs", type=_positive_int, default=None, metavar="N",
+                       help="the parallel check's -j (default: the cores this process may use)")
+    bench.add_argument("--repeats", type=_positive_int, default=3, metavar="N",
+                       help="time each figure N times and keep the best (default 3)")
+    bench.add_argument("--no-node-runs", action="store_true", help="skip the single-node run figures")
+    bench.add_argument("--robot", default="turtlebot3_waffle", help="robot for the physics figure (default turtlebot3_waffle)")
     bench.add_argument("--seconds", type=float, default=60.0, help="simulated seconds for the physics figure")
-    bench.add_argument("--json", action="store_true")
+    bench.add_argument("--json", action="store_true", help="print the figures as JSON")
     bench.set_defaults(handler=cmd_bench)
 
     package = commands.add_parser("gradescope-package", help="build the Gradescope autograder zip")
-    package.add_argument("--task", action="append", required=True, metavar="ID")
-    package.add_argument("--out", type=Path, default=Path("autograder.zip"))
+    package.add_argument("--task", action="append", required=True, metavar="ID", help="task to grade (repeatable)")
+    package.add_argument("--out", type=Path, default=Path("autograder.zip"), metavar="ZIP",
+                         help="where to write the zip (default autograder.zip)")
     package.add_argument("--timeout", type=int, default=540, metavar="SECONDS", help="stop grading after this (default 540)")
+    _add_rubric_options(package)
     package.set_defaults(handler=cmd_gradescope_package)
+    launch = commands.add_parser("launch", help="read a launch file as roslaunch does",
+                                 description="Print a launch file's parameters or nodes exactly as roslaunch does.")
+    launch.add_argument("file", type=Path, metavar="FILE", help="a roslaunch XML file (or PKG, then the file's name)")
+    launch.add_argument("args", nargs="*", metavar="NAME:=VALUE", help="launch args (before --dump-params/--nodes)")
+    launch.add_argument("--packages", type=Path, action="append", metavar="DIR",
+                        help="where $(find) looks for packages (repeatable; default: the folder around FILE's package)")
+    shown = launch.add_mutually_exclusive_group(required=True)
+    shown.add_argument("--dump-params", action="store_true", help="the parameters, as `roslaunch --dump-params`")
+    shown.add_argument("--nodes", action="store_true", help="the node names, as `roslaunch --nodes`")
+    launch.set_defaults(handler=cmd_launch)
+    rubric = commands.add_parser("rubric", help="check or try out a rubric file",
+                                 description="Work on a task's rubric TOML (see rubrics/README.md).")
+    rubric_commands = rubric.add_subparsers(dest="rubric_command", required=True, metavar="ACTION")
+    rubric_check = rubric_commands.add_parser("check", help="validate a rubric and show what it runs and scores")
+    rubric_check.add_argument("file", type=Path, metavar="FILE", help="the rubric .toml")
+    rubric_check.add_argument("--json", action="store_true")
+    rubric_check.set_defaults(handler=cmd_rubric_check)
+    rubric_try = rubric_commands.add_parser("try", help="grade one submission with a rubric file")
+    rubric_try.add_argument("file", type=Path, metavar="FILE", help="the rubric .toml")
+    rubric_try.add_argument("submission", type=Path, metavar="SUBMISSION",
+                            help="a .py file, a catkin package, a workspace src/ folder or a .zip")
+    rubric_try.add_argument("--out", type=Path, metavar="DIR", help="report folder (default: rosgrade-out/<name>)")
+    rubric_try.add_argument("--json", action="store_true", help="print the report JSON on stdout and nothing else")
+    rubric_try.set_defaults(handler=cmd_rubric_try)
     return parser
 
 
@@ -453,13 +742,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         return int(args.handler(args))
-    except CliError as exc:
-        print(f"rosgrade: error: {exc}", file=sys.stderr)
+    except CliError as exc:  # messages quote paths and names a student chose: no terminal controls
+        print(f"rosgrade: error: {one_line(str(exc))}", file=sys.stderr)
         return EXIT_ERROR
     except Exception as exc:
         if not isinstance(exc, _domain_errors()):
             raise
-        print(f"rosgrade: error: {exc}", file=sys.stderr)
+        print(f"rosgrade: error: {one_line(str(exc))}", file=sys.stderr)
         return EXIT_ERROR
     except KeyboardInterrupt:
         print("rosgrade: interrupted", file=sys.stderr)

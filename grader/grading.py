@@ -1,20 +1,32 @@
 """Grade a submission: find each task's node, run every scenario of its rubric, score the recordings."""
 from __future__ import annotations
 
+import hashlib
 import shutil
-from collections.abc import Callable, Mapping, Sequence
+import tempfile
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from dataclasses import dataclass, field
 from pathlib import Path
 
+from grader import timing
+from grader.launch import LaunchError, find_packages, read_launch
+from grader.launch.specs import node_specs
 from grader.recording import Recording, RecordingError
-from grader.report import SubmissionReport, TaskReport
+from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
 from grader.rubric import Node, Rubric, load_rubrics
+from grader.rubricfile import RubricFile, load_rubric_files, stamp
 from grader.runtime import NodeSpec, RunSpec, ScriptNotFound, check_script, find_script
+from grader.runtime.confine import detect, package_folder
 from grader.runtime.scripts import candidates
-from grader.runtime.session import RunError, run
+from grader.runtime.parallel import Outcome, Run, run_all
+from grader.runtime.session import RunError, node_log_path
 from grader.scoring import score_task
-from grader.submission import SubmissionError, open_submission
+from grader.submission import (
+    STAGE_PREFIX, SubmissionError, claim, links_leaving, open_submission, remove_if_abandoned, unzip,
+)
 
-__all__ = ["SubmissionError", "grade_submission", "grade_task"]
+__all__ = ["GradedSubmission", "SubmissionError", "grade_as_data", "grade_submission", "grade_task"]
 
 Progress = Callable[[str], None]
 
@@ -23,7 +35,12 @@ def _script_names(node: Node) -> list[str]:
     return [node.script, *node.aliases]
 
 
-def _locate(folder: Path, node: Node) -> tuple[Path, list[str]]:
+def _locate(folder: Path, node: Node, only_node: bool) -> tuple[Path, list[str]]:
+    if folder.is_file() and only_node:  # one script named on the command line with --task: grade that file
+        if folder.name in _script_names(node):
+            return folder, []
+        return folder, [f"Graded {folder.name} as {node.script}; on a ROS machine the task expects it under "
+                        f"that name."]
     for name in _script_names(node):
         try:
             return find_script(folder, name)
@@ -32,9 +49,14 @@ def _locate(folder: Path, node: Node) -> tuple[Path, list[str]]:
     raise ScriptNotFound(f"no file named {' or '.join(_script_names(node))} in the submission")
 
 
+def _present(folder: Path, rubric: Rubric) -> bool:
+    if rubric.launch is not None:
+        return any(candidates(folder, name) for name in [rubric.launch.file, *rubric.launch.aliases])
+    return all(any(candidates(folder, n) for n in _script_names(node)) for node in rubric.nodes)
+
+
 def _present_tasks(folder: Path, rubrics: Mapping[str, Rubric]) -> list[str]:
-    return [task for task, rubric in rubrics.items()
-            if all(any(candidates(folder, n) for n in _script_names(node)) for node in rubric.nodes)]
+    return [task for task, rubric in rubrics.items() if _present(folder, rubric)]
 
 
 def _node_spec(script: Path, node: Node) -> NodeSpec:
@@ -42,43 +64,118 @@ def _node_spec(script: Path, node: Node) -> NodeSpec:
     return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace)
 
 
-def grade_task(folder: Path, rubric: Rubric, out_dir: Path, progress: Progress | None = None) -> TaskReport:
-    """Run every scenario of one rubric on the submission in `folder` and score the recordings."""
-    try:
-        located = [_locate(folder, node) for node in rubric.nodes]
-    except ScriptNotFound as exc:
-        return TaskReport(id=rubric.id, title=rubric.title, status="not_found", max_score=rubric.max_score,
-                          message=f"{exc}; name your script as the task asks.")
+def _links_leaving(folder: Path, scripts: list[Path]) -> list[str]:
+    """The scripts and the files of their packages that are links out of the submission, relative to it."""
+    if not folder.is_dir():  # a single script given on the command line: the user chose that file
+        return []
+    paths = [p for script in scripts for p in (script, package_folder(script))]
+    return [str(link.relative_to(folder)) for link in links_leaving(folder, paths)]
+
+
+Started = tuple[tuple[NodeSpec, ...], list[str], list[Path]]  # node specs, findings, the scripts as found
+
+
+def _script_nodes(folder: Path, rubric: Rubric) -> Started:
+    located = [_locate(folder, node, len(rubric.nodes) == 1) for node in rubric.nodes]
     findings: list[str] = []
     for script, notes in located:
         findings += notes + check_script(script)
+    nodes = tuple(_node_spec(script, node) for (script, _), node in zip(located, rubric.nodes))
+    return nodes, findings, [script for script, _ in located]
+
+
+def _launch_nodes(folder: Path, rubric: Rubric) -> Started:
+    """The nodes the student's launch file starts, as `roslaunch pkg file args...` would (LaunchError if not)."""
+    task = rubric.launch
+    names = [task.file, *task.aliases]
+    found = next((candidates(folder, name) for name in names if candidates(folder, name)), None)
+    if not found:
+        raise ScriptNotFound(f"no launch file named {' or '.join(names)} in the submission; put it in your "
+                             "package's launch/ folder")
+    packages = find_packages(folder)
+    launch = read_launch(found[0], task.args, packages, confine_to=folder)
+    nodes, findings = node_specs(launch, packages, task.stdin, task.allow_not_executable)
+    for name, value in task.args.items():
+        if name not in launch.args:
+            findings.append(f"{found[0].name} declares no <arg name=\"{name}\">, so roslaunch ignored the "
+                            f"task's {name}:={value}: declare it and use $(arg {name}) where the value is needed.")
+    for world in launch.worlds:
+        if world.robot != rubric.robot:
+            findings.append(f"{world.where}: {world.package}/{world.file} starts a {world.robot}, but this task is "
+                            f"graded on a {rubric.robot}.")
+    scripts = list(dict.fromkeys(spec.script for spec in nodes))
+    for script in scripts:
+        findings += check_script(script)
+    return nodes, findings, [found[0], *scripts]
+
+
+def _hidden_text(nodes: tuple[NodeSpec, ...], log: Path) -> list[str]:
+    """Launched nodes whose text roslaunch would have written to a log file rather than the terminal."""
+    return [f"{spec.script.name} wrote text, but its <node> has no output=\"screen\": roslaunch sends that text to "
+            "~/.ros/log, not to the terminal (the grader read it either way)."
+            for index, spec in enumerate(nodes) if spec.output == "log" and node_log_path(log, index).exists()]
+
+
+@dataclass
+class _TaskPlan:
+    """One task ready to run: its nodes, what was found about them, and its scenario runs."""
+
+    rubric: Rubric
+    nodes: tuple[NodeSpec, ...]
+    findings: list[str]
+    runs: list[Run]
+
+
+def _plan_task(folder: Path, rubric: Rubric, out_dir: Path) -> _TaskPlan | TaskReport:
+    """The task's runs, or its report at once when there is nothing to run (no script, a bad launch file)."""
+    try:
+        nodes, findings, scripts = _launch_nodes(folder, rubric) if rubric.launch else _script_nodes(folder, rubric)
+    except ScriptNotFound as exc:
+        hint = "" if rubric.launch else "; name your script as the task asks."
+        return TaskReport(id=rubric.id, title=rubric.title, status="not_found", max_score=rubric.max_score,
+                          message=f"{exc}{hint}")
+    except LaunchError as exc:
+        return TaskReport(id=rubric.id, title=rubric.title, status="error", max_score=rubric.max_score,
+                          message=str(exc))
+    leaving = _links_leaving(folder, scripts)
+    if leaving:
+        return TaskReport(id=rubric.id, title=rubric.title, status="error", max_score=rubric.max_score,
+                          message=f"{', '.join(leaving)} is a symbolic link to a file outside your submission; "
+                                  "the grader does not follow it. Submit the file itself.")
     task_dir = out_dir / rubric.id
     if task_dir.exists():
         shutil.rmtree(task_dir)
     task_dir.mkdir(parents=True)
-    nodes = tuple(_node_spec(script, node) for (script, _), node in zip(located, rubric.nodes))
+    runs = [Run(RunSpec(scenario=scenario, nodes=nodes, limits=rubric.limits, name=scenario.name),
+                task_dir / f"{scenario.name}.mcap", task_dir / f"{scenario.name}.log") for scenario in rubric.scenarios]
+    return _TaskPlan(rubric, nodes, findings, runs)
+
+
+def _score_task(plan: _TaskPlan, outcomes: Sequence[Outcome]) -> TaskReport:
+    """Score the task's recordings, in scenario order; the first scenario that could not run is the task's error."""
+    rubric, nodes, findings = plan.rubric, plan.nodes, plan.findings
     recordings: dict[str, Recording] = {}
     paths: list[str] = []
     run_notes: list[str] = []
     timed_out = False
-    for scenario in rubric.scenarios:
-        if progress:
-            progress(f"{rubric.id}: scenario {scenario.name}")
-        mcap = task_dir / f"{scenario.name}.mcap"
+    for item, result in zip(plan.runs, outcomes):
+        name = item.spec.name
         try:
-            result = run(RunSpec(scenario=scenario, nodes=nodes, limits=rubric.limits, name=scenario.name),
-                         mcap, task_dir / f"{scenario.name}.log")
-            recordings[scenario.name] = Recording.open(mcap)
+            if isinstance(result, RunError):
+                raise result
+            recordings[name] = Recording.open(item.recording)
         except (RunError, RecordingError) as exc:
             return TaskReport(id=rubric.id, title=rubric.title, status="error", max_score=rubric.max_score,
-                              recordings=paths, diagnostics=findings, message=f"scenario {scenario.name}: {exc}")
-        paths.append(str(mcap))
+                              recordings=paths, diagnostics=findings, message=f"scenario {name}: {exc}")
+        paths.append(str(item.recording))
         timed_out |= any(n.status == "timeout" for n in result.nodes)
         # Counts differ from scenario to scenario; the first (nominal) run's are the ones worth showing.
-        for note in result.diagnostics + (result.topics if len(paths) == 1 else []):
+        firsts = result.topics + _hidden_text(nodes, item.log) if len(paths) == 1 else []
+        for note in result.diagnostics + firsts:
             if note not in run_notes:
                 run_notes.append(note)
-    report = score_task(rubric, recordings)
+    with timing.stage("scoring"):
+        report = score_task(rubric, recordings)
     return report.model_copy(update={
         "status": "timeout" if timed_out else report.status,
         "recordings": paths,
@@ -86,10 +183,38 @@ def grade_task(folder: Path, rubric: Rubric, out_dir: Path, progress: Progress |
     })
 
 
+def _grade_tasks(folder: Path, rubrics: Sequence[Rubric], out_dir: Path, progress: Progress | None,
+                 jobs: int) -> list[TaskReport]:
+    """Plan every task, run all their scenarios (`jobs` at a time), then score each task."""
+    plans = [_plan_task(folder, rubric, out_dir) for rubric in rubrics]
+    runs = [item for plan in plans if isinstance(plan, _TaskPlan) for item in plan.runs]
+    task_of = {id(item): plan.rubric.id for plan in plans if isinstance(plan, _TaskPlan) for item in plan.runs}
+
+    def started(item: Run) -> None:
+        if progress:
+            progress(f"{task_of[id(item)]}: scenario {item.spec.name}")
+
+    outcomes = iter(run_all(runs, jobs, started))
+    return [_score_task(plan, [next(outcomes) for _ in plan.runs]) if isinstance(plan, _TaskPlan) else plan
+            for plan in plans]
+
+
+def grade_task(folder: Path, rubric: Rubric, out_dir: Path, progress: Progress | None = None) -> TaskReport:
+    """Run every scenario of one rubric on the submission in `folder` and score the recordings."""
+    return _grade_tasks(folder, [rubric], out_dir, progress, jobs=1)[0]
+
+
 def grade_submission(submission: Path, out_dir: Path, task_ids: Sequence[str] | None = None,
                      rubrics: Mapping[str, Rubric] | None = None,
-                     progress: Progress | None = None) -> SubmissionReport:
-    """Grade the named tasks (default: those whose scripts are present) and return the whole report."""
+                     progress: Progress | None = None,
+                     sources: Mapping[str, RubricFile] | None = None, jobs: int = 1) -> SubmissionReport:
+    """Grade the named tasks (default: those whose scripts are present) and return the whole report.
+
+    Each task's report is stamped with the rubric that made it: `sources` by task id when the rubrics were
+    handed over as bytes, else the files they were loaded from. `jobs` scenarios run at once (the report and
+    recordings are the same for any number); it defaults to 1 so that a batch, which already grades one
+    submission per core, does not run cores x cores processes.
+    """
     rubrics = rubrics if rubrics is not None else load_rubrics()
     unknown = [t for t in task_ids or () if t not in rubrics]
     if unknown:
@@ -98,8 +223,71 @@ def grade_submission(submission: Path, out_dir: Path, task_ids: Sequence[str] | 
     with open_submission(submission) as folder:
         tasks = list(task_ids) if task_ids else _present_tasks(folder, rubrics)
         if not tasks:
-            scripts = ", ".join(sorted({node.script for r in rubrics.values() for node in r.nodes}))
-            raise SubmissionError(f"found none of the task scripts ({scripts}) in {submission}; "
-                                  "name your script as the task asks, or pass --task.")
-        reports = [grade_task(folder, rubrics[task], out_dir, progress) for task in tasks]
-    return SubmissionReport(submission=str(submission), tasks=reports).total()
+            files = {node.script for r in rubrics.values() for node in r.nodes}
+            files |= {r.launch.file for r in rubrics.values() if r.launch is not None}
+            raise SubmissionError(f"found none of the task scripts or launch files ({', '.join(sorted(files))}) in "
+                                  f"{submission}; name your files as the task asks, or pass --task.")
+        reports = _grade_tasks(folder, [rubrics[task] for task in tasks], out_dir, progress, jobs)
+    stamped = [r.model_copy(update={"rubric": stamp(rubrics[r.id], (sources or {}).get(r.id))}) for r in reports]
+    return SubmissionReport(submission=str(submission), tasks=stamped, recording_format=RECORDING_FORMAT,
+                            isolation=detect().isolation).total()
+
+
+@dataclass
+class GradedSubmission:
+    """A whole submission's results as data: what a grader process anywhere hands back to the batch."""
+
+    report: SubmissionReport  # recordings named relative to the student's report folder
+    files: dict[str, bytes] = field(default_factory=dict)  # recordings and node logs, by that relative path
+
+
+def grade_as_data(submission: bytes, label: str, task_ids: Sequence[str], rubrics: Sequence[RubricFile],
+                  stage_root: Path | None = None) -> GradedSubmission:
+    """Grade a submission handed over as zip bytes with rubrics handed over as bytes, and return the results.
+
+    Reads and leaves nothing outside its own temporary folders, so the same call runs in a local worker process
+    or on a Dask worker without a shared file system. The submission is unpacked at a path named after its
+    content, so the same submission is graded at the same path anywhere (node log records carry script paths):
+    under `stage_root` (default: the temporary folder), which must not depend on the run.
+    """
+    with tempfile.TemporaryDirectory(prefix="rosgrade-results-") as tmp:
+        root = Path(tmp)
+        loaded = load_rubric_files(rubrics, root / "rubrics")
+        with _unpacked(submission, stage_root or Path(tempfile.gettempdir())) as folder:
+            report = grade_submission(folder, root / "out", list(task_ids), loaded,
+                                      sources={f.task_id: f for f in rubrics})
+        return _as_data(report.model_copy(update={"submission": label}), root / "out")
+
+
+def _as_data(report: SubmissionReport, out: Path) -> GradedSubmission:
+    files = {p.relative_to(out).as_posix(): p.read_bytes() for p in sorted(out.rglob("*")) if p.is_file()}
+    tasks = [t.model_copy(update={"recordings": [Path(r).relative_to(out).as_posix() for r in t.recordings]})
+             for t in report.tasks]
+    return GradedSubmission(report.model_copy(update={"tasks": tasks}), files)
+
+
+@contextmanager
+def _unpacked(submission: bytes, root: Path) -> Iterator[Path]:
+    """The zip unpacked at <root>/rosgrade-grade-<content hash>[-n] (-n only when the same content is being graded
+    twice at once). Its OWNER_FILE names this process, so whoever started a killed grader can remove it."""
+    base = root / f"{STAGE_PREFIX}{hashlib.sha256(submission).hexdigest()[:16]}"
+    for attempt in range(1000):
+        folder = base if attempt == 0 else base.with_name(f"{base.name}-{attempt}")
+        remove_if_abandoned(folder)
+        try:
+            folder.mkdir(mode=0o755)
+            break
+        except FileExistsError:
+            continue
+    else:
+        raise SubmissionError(f"cannot make a folder to unpack the submission in {base.parent}")
+    try:
+        claim(folder)
+        archive = folder / ".submission.zip"
+        archive.write_bytes(submission)
+        unzip(archive, folder / "submission")
+        archive.unlink()
+        yield folder / "submission"
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+

@@ -14,11 +14,15 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, field_validator, model_validator
+from pydantic import (
+    BaseModel, ConfigDict, Field, PrivateAttr, ValidationError, ValidationInfo, field_validator, model_validator,
+)
 
-from grader.metrics import METRICS, MetricParams
+from grader.metrics import METRICS, Metric, MetricParams
 from grader.metrics.facts import FACTS
+from grader.metrics.plugin import PluginError, load_plugin
 from grader.report import Visibility
+from grader.wording import tidy
 from grader.tolerance import Sigmoid, ToleranceError, check
 from grader.runtime.spec import Limits
 from sim import Scenario as WorldScenario
@@ -28,6 +32,22 @@ DEFAULT_DIR = Path(__file__).resolve().parent.parent / "rubrics"  # the `rubrics
 # Names every feedback template may use besides the metric's quantities and the run facts.
 TEMPLATE_NAMES = frozenset({"measured", "lower", "upper", "expected", "scenario", "credit", "points", "score"})
 _ID = r"^[a-z][a-z0-9_]*$"
+PLUGIN_DIR = "plugin_dir"  # validation context key: the folder plugin metric files are resolved in
+
+
+def resolve_metric(name: str, base_dir: Path | None) -> Metric:
+    """A built-in metric by name, or ``"file.py:function"`` from a plugin file in ``base_dir``."""
+    if ":" not in name and not name.endswith(".py"):
+        if name not in METRICS:
+            raise ValueError(f"unknown metric {name!r}; expected one of {', '.join(sorted(METRICS))} "
+                             "or a plugin \"my_metrics.py:function\" beside the rubric")
+        return METRICS[name]
+    if base_dir is None:
+        raise ValueError(f"plugin metric {name!r} can only be used in a rubric file (its folder holds the plugin)")
+    try:
+        return load_plugin(name, Path(base_dir))
+    except PluginError as e:
+        raise ValueError(str(e)) from None
 
 
 class RubricError(Exception):
@@ -59,6 +79,17 @@ class Node(_Model):
     stdin: str | None = None
     remaps: dict[str, str] = {}
     namespace: str | None = None  # ROS_NAMESPACE
+
+
+class LaunchFile(_Model):
+    """Start the task from the student's launch file, as ``roslaunch pkg FILE name:=value ...`` would."""
+
+    file: str = Field(pattern=r"^[\w.-]+\.launch(\.xml)?$")
+    aliases: list[str] = []
+    args: dict[str, str] = {}
+    # roslaunch refuses a script without `chmod +x`; true runs it with python3 anyway (and says so).
+    allow_not_executable: bool = False
+    stdin: str | None = None
 
 
 class Tolerance(_Model):
@@ -112,10 +143,22 @@ class Condition(_Model):
 
 
 class Hint(_Model):
-    """Feedback about a likely cause, added when its conditions hold (e.g. radius 1 m and v = w)."""
+    """Feedback about a likely cause, added when its conditions hold (e.g. radius 1 m and v = w).
+
+    ``instead``: the text replaces the verdict whatever the credit, for runs the usual words would misdescribe
+    (a node that had exited by itself before Ctrl+C was not "at rest 0.00 s after Ctrl+C").
+    """
 
     when: list[Condition] = Field(min_length=1)
     text: str
+    instead: bool = False
+
+
+class Part(_Model):
+    """One more quantity of the criterion's metric, scored with its own tolerance; the criterion averages the parts."""
+
+    quantity: str
+    tolerance: Tolerance
 
 
 class Feedback(_Model):
@@ -138,31 +181,34 @@ class Criterion(_Model):
     scenarios: list[str] | None = None  # None: every scenario of the rubric
     combine: Literal["min", "mean"] = "min"
     tolerance: Tolerance
+    parts: list[Part] = []  # more quantities: the credit is the mean of `quantity`'s and each part's
     expected: str = ""
     visibility: Visibility = "visible"
     feedback: Feedback = Feedback()
     hints: list[Hint] = []
     _params: MetricParams = PrivateAttr()
+    _metric: Metric = PrivateAttr()
 
     @field_validator("metric")
     @classmethod
-    def _known_metric(cls, v: str) -> str:
-        if v not in METRICS:
-            raise ValueError(f"unknown metric {v!r}; expected one of {', '.join(sorted(METRICS))}")
+    def _known_metric(cls, v: str, info: ValidationInfo) -> str:
+        resolve_metric(v, (info.context or {}).get(PLUGIN_DIR))  # reported at the field; kept by the check below
         return v
 
     @model_validator(mode="after")
-    def _check_against_metric(self) -> Criterion:
-        metric = METRICS[self.metric]
+    def _check_against_metric(self, info: ValidationInfo) -> Criterion:
+        base_dir = (info.context or {}).get(PLUGIN_DIR)
+        self._metric = metric = resolve_metric(self.metric, base_dir)
         try:
             self._params = metric.params.model_validate(self.params)
         except ValidationError as e:
             raise ValueError(f"params for metric {self.metric!r}: " + "; ".join(_brief(err) for err in e.errors()))
-        if self.quantity not in metric.quantities:
-            raise ValueError(
-                f"quantity {self.quantity!r} is not measured by {self.metric!r}; "
-                f"expected one of {', '.join(sorted(metric.quantities))}"
-            )
+        for quantity in (self.quantity, *(p.quantity for p in self.parts)):
+            if quantity not in metric.quantities:
+                raise ValueError(
+                    f"quantity {quantity!r} is not measured by {self.metric!r}; "
+                    f"expected one of {', '.join(sorted(metric.quantities))}"
+                )
         known = metric.quantities | FACTS | TEMPLATE_NAMES
         texts = [self.feedback.passed, self.feedback.partial or "", self.feedback.failed, *(h.text for h in self.hints)]
         for text in texts:
@@ -174,6 +220,11 @@ class Criterion(_Model):
                 if cond.quantity not in metric.quantities | FACTS:
                     raise ValueError(f"hint condition on unknown quantity {cond.quantity!r}")
         return self
+
+    @property
+    def metric_def(self) -> Metric:
+        """The metric this criterion measures with: built in, or the plugin its rubric's folder provides."""
+        return self._metric
 
     @property
     def metric_params(self) -> MetricParams:
@@ -196,10 +247,12 @@ class Rubric(_Model):
     title: str
     description: str = ""
     robot: str
-    nodes: list[Node] = Field(min_length=1)
+    nodes: list[Node] = []
+    launch: LaunchFile | None = None  # instead of `nodes`: the nodes the student's launch file starts
     scenarios: list[Scenario] = Field(min_length=1)
     criteria: list[Criterion] = Field(min_length=1)
     limits: Limits = Limits()  # resource limits for the student's node in every scenario
+    _source: Path | None = PrivateAttr(default=None)
 
     @model_validator(mode="before")
     @classmethod
@@ -225,6 +278,9 @@ class Rubric(_Model):
 
     @model_validator(mode="after")
     def _cross_references(self) -> Rubric:
+        if bool(self.nodes) == (self.launch is not None):
+            raise ValueError("a rubric names the node(s) to run in [[nodes]] or a launch file in [launch]: "
+                             "give exactly one of them")
         names = [s.name for s in self.scenarios]
         _unique(names, "scenario name")
         _unique([c.id for c in self.criteria], "criterion id")
@@ -233,11 +289,16 @@ class Rubric(_Model):
             for name in c.scenarios or []:
                 if name not in by_name:
                     raise ValueError(f"criterion {c.id!r} names scenario {name!r}; expected one of {', '.join(names)}")
-            if METRICS[c.metric].needs_shutdown:
+            if c.metric_def.needs_shutdown:
                 for s in self.scenario_list(c):
                     if s.shutdown_at is None:
                         raise ValueError(f"criterion {c.id!r} checks the shutdown, but scenario {s.name!r} has no shutdown_at")
         return self
+
+    @property
+    def source(self) -> Path | None:
+        """The TOML file this rubric was read from (None when built in code)."""
+        return self._source
 
     @property
     def max_score(self) -> float:
@@ -311,8 +372,8 @@ class SafeFormatter(string.Formatter):
 
 
 def render(template: str, values: dict[str, Any]) -> str:
-    """Fill a feedback template; unknown or missing fields print as 'n/a'."""
-    return SafeFormatter().vformat(template, (), _Missing(values))
+    """Fill a feedback template (unknown or missing fields print as 'n/a') and tidy its wording."""
+    return tidy(SafeFormatter().vformat(template, (), _Missing(values)))
 
 
 class _Missing(dict):  # type: ignore[type-arg]
@@ -331,7 +392,7 @@ def load_rubric(path: str | Path) -> Rubric:
         where = re.search(r"line \d+(, column \d+)?", str(e))
         raise RubricError(path, where.group(0) if where else "(syntax)", f"TOML syntax error: {e}") from None
     try:
-        rubric = Rubric.model_validate(data)
+        rubric = Rubric.model_validate(data, context={PLUGIN_DIR: path.resolve().parent})
     except ValidationError as e:
         errors = e.errors()
         described = [(_field_path(tuple(err["loc"]), data), _describe(err)) for err in errors]
@@ -339,6 +400,7 @@ def load_rubric(path: str | Path) -> Rubric:
         raise RubricError(path, first_field, first_msg, [f"{path}: {f}: {m}" for f, m in described[1:]]) from None
     if rubric.id != path.stem:
         raise RubricError(path, "id", f"the task id {rubric.id!r} must match the file name {path.stem!r}")
+    rubric._source = path
     return rubric
 
 
@@ -365,3 +427,30 @@ def load_rubrics(directory: Path | None = None) -> dict[str, Rubric]:
         rubric = load_rubric(path)
         rubrics[rubric.id] = rubric
     return rubrics
+
+
+def task_table(extra: Iterable[str | Path] = (), builtin: bool = True) -> dict[str, Rubric]:
+    """The tasks to grade by id: the built-in rubrics (``load_rubrics()``) plus every extra rubric file or folder.
+
+    A folder contributes each ``*.toml`` in it; plugin metrics are found beside each file. A task id defined twice
+    (an extra rubric named like a built-in one, or two extras) is a RubricError naming both files.
+    Rubrics hold plugin functions, so a worker process should call this again rather than receive them pickled.
+    """
+    table = load_rubrics() if builtin else {}
+    for entry in extra:
+        entry = Path(entry)
+        if entry.is_dir():
+            found = list(load_rubrics(entry).values())
+            if not found:
+                raise RubricError(entry, "(directory)", "holds no *.toml rubric files")
+        elif entry.suffix == ".toml" or not entry.exists():
+            found = [load_rubric(entry)]
+        else:
+            raise RubricError(entry, "(file)", "expected a rubric .toml file or a folder of them")
+        for rubric in found:
+            if rubric.id in table:
+                other = table[rubric.id].source or "a built-in rubric"
+                raise RubricError(rubric.source or entry, "id", f"task {rubric.id!r} is already defined by {other}; "
+                                  "give this task another id (and rename its file to match)")
+            table[rubric.id] = rubric
+    return table

@@ -6,10 +6,10 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from grader.metrics import METRICS, Measurement, MetricError, RunData
+from grader.metrics import Measurement, MetricError, RunData
 from grader.metrics.facts import run_facts
 from grader.report import CriterionResult, TaskReport
-from grader.rubric import Criterion, Rubric, Scenario, render
+from grader.rubric import Criterion, Hint, Rubric, Scenario, render
 from grader.tolerance import tolerance
 
 PASS_CREDIT = 1.0 - 1e-9
@@ -115,7 +115,7 @@ def _missing(criterion: Criterion, scenario: Scenario) -> Outcome:
 
 def _evaluate(criterion: Criterion, scenario: Scenario, run: RunData, facts: Measurement) -> Outcome:
     """Measure, map to credit with the tolerance, and write the feedback with any hints that apply."""
-    metric = METRICS[criterion.metric]
+    metric = criterion.metric_def
     lo, hi = criterion.tolerance.bounds
     base = {**facts, "lower": lo, "upper": hi, "expected": criterion.expected_text, "scenario": scenario.name,
             "points": criterion.points}
@@ -125,21 +125,28 @@ def _evaluate(criterion: Criterion, scenario: Scenario, run: RunData, facts: Mea
         values = {**base, "credit": 0.0, "score": 0.0, "measured": None}
         return Outcome(scenario.name, 0.0, {}, _join([f"Could not measure this: {e}.", *_hints(criterion, values)]))
     value = measured[criterion.quantity]
-    credit = tolerance(
-        _number(value), criterion.tolerance.bounds, criterion.tolerance.margin,
-        criterion.tolerance.sigmoid, criterion.tolerance.value_at_margin,
-    )
+    scored = [(criterion.quantity, criterion.tolerance), *((p.quantity, p.tolerance) for p in criterion.parts)]
+    credit = sum(
+        tolerance(_number(measured[q]), t.bounds, t.margin, t.sigmoid, t.value_at_margin) for q, t in scored
+    ) / len(scored)
     values = {**base, **measured, "measured": value, "credit": credit, "score": credit * criterion.points}
     fb = criterion.feedback
-    if credit >= PASS_CREDIT:
+    instead = [render(h.text, values) for h in criterion.hints if h.instead and _applies(h, values)]
+    if instead:
+        texts = instead
+    elif credit >= PASS_CREDIT:
         texts = [render(fb.passed, values)]
     else:
         texts = [render(fb.partial if credit > 0.0 and fb.partial else fb.failed, values), *_hints(criterion, values)]
     return Outcome(scenario.name, credit, measured, _join(texts))
 
 
+def _applies(hint: Hint, values: Mapping[str, Any]) -> bool:
+    return all(c.holds(dict(values)) for c in hint.when)
+
+
 def _hints(criterion: Criterion, values: Mapping[str, Any]) -> list[str]:
-    return [render(h.text, dict(values)) for h in criterion.hints if all(c.holds(dict(values)) for c in h.when)]
+    return [render(h.text, dict(values)) for h in criterion.hints if not h.instead and _applies(h, values)]
 
 
 def _join(texts: list[str]) -> str:

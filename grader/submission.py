@@ -1,6 +1,7 @@
 """Open what a student handed in (a .py file, a package, a workspace or a .zip) as a folder, safely."""
 from __future__ import annotations
 
+import os
 import shutil
 import stat
 import tempfile
@@ -11,6 +12,8 @@ from pathlib import Path, PurePosixPath
 
 MAX_UNPACKED_BYTES = 200 * 1024 * 1024
 MAX_MEMBERS = 20_000
+STAGE_PREFIX = "rosgrade-grade-"  # a batch's submissions are unpacked at <tmp>/rosgrade-grade-<content hash>
+OWNER_FILE = ".owner-pid"  # in such a folder: the grading process that made it (to clean up after a kill)
 MAX_RATIO = 200  # a member that expands more than this is treated as a zip bomb
 
 
@@ -38,7 +41,8 @@ def _safe_members(archive: zipfile.ZipFile, name: str) -> list[zipfile.ZipInfo]:
     return members
 
 
-def _unzip(path: Path, into: Path) -> None:
+def unzip(path: Path, into: Path) -> None:
+    """Unpack a .zip into a folder after checking it is safe (no escaping paths, links or zip bombs)."""
     try:
         with zipfile.ZipFile(path) as archive:
             for info in _safe_members(archive, path.name):
@@ -56,6 +60,34 @@ def _unzip(path: Path, into: Path) -> None:
         raise SubmissionError(f"{path.name} is not a readable .zip file ({exc}); re-create the archive.") from None
 
 
+def links_leaving(root: Path, paths: list[Path]) -> list[Path]:
+    """Symbolic links among ``paths`` and inside those that are folders whose targets lie outside ``root``.
+
+    Such a link would grade someone else's file (``move_circle.py -> ../classmate/move_circle.py``) or run and quote
+    a file the student may not read; the grader refuses the task instead of following it. Links within the
+    submission are fine. At most MAX_MEMBERS entries are looked at.
+    """
+    base = root.resolve()
+    found: list[Path] = []
+    seen = 0
+
+    def check(path: Path) -> None:
+        if path.is_symlink() and not path.resolve().is_relative_to(base) and path not in found:
+            found.append(path)
+
+    for path in paths:
+        check(path)
+        if path.is_symlink() or not path.is_dir():
+            continue
+        for folder, dirs, files in os.walk(path):
+            for name in sorted(dirs + files):
+                seen += 1
+                if seen > MAX_MEMBERS:
+                    return found
+                check(Path(folder) / name)
+    return found
+
+
 @contextmanager
 def open_submission(path: Path) -> Iterator[Path]:
     """Yield a folder (or a single .py file) holding the submission; a .zip is unpacked into a temporary folder."""
@@ -63,9 +95,28 @@ def open_submission(path: Path) -> Iterator[Path]:
         raise SubmissionError(f"{path} does not exist.")
     if path.is_file() and path.suffix.lower() == ".zip":
         with tempfile.TemporaryDirectory(prefix="rosgrade-sub-") as tmp:
-            _unzip(path, Path(tmp))
+            unzip(path, Path(tmp))
             yield Path(tmp)
         return
     if path.is_file() and path.suffix != ".py":
         raise SubmissionError(f"{path.name} is neither a .py script, a folder nor a .zip file.")
     yield path
+
+
+def claim(folder: Path) -> None:
+    """Mark folder as this process's, so that it can be removed once this process is gone (see remove_if_abandoned)."""
+    (folder / OWNER_FILE).write_text(str(os.getpid()))
+
+
+def remove_if_abandoned(folder: Path) -> None:
+    """Remove a claimed folder whose owner process is gone (killed, with its machine or its Dask worker)."""
+    try:
+        owner = int((folder / OWNER_FILE).read_text())
+    except (OSError, ValueError):
+        return  # not claimed, or being made right now
+    try:
+        os.kill(owner, 0)
+    except ProcessLookupError:
+        shutil.rmtree(folder, ignore_errors=True)
+    except PermissionError:  # alive, as another user
+        return

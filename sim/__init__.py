@@ -1,25 +1,38 @@
-"""rosgrade's simulated world: robot profiles, MuJoCo physics, base drivers, odometry and the clock."""
+"""rosgrade's simulated worlds: robot profiles, MuJoCo physics, base drivers, odometry, the clock, and turtlesim."""
 from __future__ import annotations
 
 from sim.profile import ProfileError, RobotProfile, available_robots, load_robot
-from sim.samples import CommandSample, GroundTruthSample, OdometrySample, Sample, TransformSample
+from sim.samples import (ColorSample, CommandSample, GroundTruthSample, ImuSample, JointStateSample, LogSample,
+                         OdometrySample, Sample, ScanSample, TransformSample, TurtlePoseSample, WorldTopic)
 from sim.scenario import Imperfections, Pose2D, Scenario, ScriptedCommand
+from sim.turtlesim import TurtlesimError, TurtlesimWorld
 from sim.world import SimError, World
+from sim.worlds import open_world
 
 __all__ = [
+    "ColorSample",
+    "LogSample",
+    "TurtlePoseSample",
+    "TurtlesimError",
+    "TurtlesimWorld",
+    "open_world",
     "CommandSample",
     "GroundTruthSample",
+    "ImuSample",
+    "JointStateSample",
     "Imperfections",
     "OdometrySample",
     "Pose2D",
     "ProfileError",
     "RobotProfile",
     "Sample",
+    "ScanSample",
     "Scenario",
     "ScriptedCommand",
     "SimError",
     "TransformSample",
     "World",
+    "WorldTopic",
     "available_robots",
     "load_robot",
 ]

@@ -25,11 +25,11 @@ def physics_benchmark(robot: str = "turtlebot3_waffle", sim_seconds: float = 60.
     samples = 0
     t_ns = world.time_ns
     end_ns = world.start_ns + seconds_to_ns(sim_seconds)
-    started = time.perf_counter()
+    started, cpu_started = time.perf_counter(), time.process_time()
     while t_ns < end_ns:
         t_ns = min(t_ns + ADVANCE_PERIOD_NS, end_ns)
         samples += len(world.advance_to(t_ns))
-    world_wall = time.perf_counter() - started
+    world_wall, world_cpu = time.perf_counter() - started, time.process_time() - cpu_started
 
     steps = round(sim_seconds * PHYSICS_HZ)
     data = mujoco.MjData(world.model)
@@ -47,6 +47,8 @@ def physics_benchmark(robot: str = "turtlebot3_waffle", sim_seconds: float = 60.
         "samples": samples,
         "wall_s": world_wall,
         "rtf": sim_seconds / world_wall,
+        "cpu_s": world_cpu,
+        "cpu_rtf": sim_seconds / world_cpu if world_cpu else 0.0,  # per CPU second: what load on the machine changes least
         "steps_per_s": steps / world_wall,
         "raw_wall_s": raw_wall,
         "raw_rtf": sim_seconds / raw_wall,

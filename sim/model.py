@@ -7,17 +7,22 @@ penetration so the rolling radius is the geometric one.
 """
 from __future__ import annotations
 
+import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import mujoco
 
 from sim.clock import PHYSICS_HZ
 from sim.profile import RobotProfile
+from sim.scenario import Box, Cylinder
 
 CONTACT_SOLREF = "0.004 1"
 CONTACT_SOLIMP = "0.95 0.99 0.001"
 WHEEL_FRICTION = "1 0.005 0.0001"
 SETTLE_STEPS = PHYSICS_HZ // 2  # long enough for the contacts to reach static penetration
+# Geom groups: obstacles 0 (what a laser sees), the robot 1, the floor 2.
+OBSTACLE_GROUP, ROBOT_GROUP, FLOOR_GROUP = 0, 1, 2
 
 
 @dataclass(frozen=True)
@@ -29,10 +34,27 @@ class RobotModel:
     wheel_qpos: tuple[int, int]  # left, right
     wheel_qvel: tuple[int, int]
     wheel_ctrl: tuple[int, int]
+    base_body: int
+    obstacle_geoms: tuple[int, ...]
 
 
-def mjcf(profile: RobotProfile, wheel_radius: float) -> str:
-    """The MJCF text of ``profile`` with wheels of physical radius ``wheel_radius`` (floats written exactly)."""
+def _obstacle(index: int, obstacle: Box | Cylinder) -> str:
+    """The MJCF geom of one fixed obstacle, standing on the floor."""
+    if isinstance(obstacle, Cylinder):
+        shape = f'type="cylinder" size="{obstacle.radius!r} {obstacle.height / 2!r}"'
+    else:
+        half = obstacle.yaw / 2
+        shape = (f'type="box" size="{obstacle.length / 2!r} {obstacle.width / 2!r} {obstacle.height / 2!r}" '
+                 f'quat="{math.cos(half)!r} 0 0 {math.sin(half)!r}"')
+    return f"""
+    <geom name="obstacle_{index}" group="{OBSTACLE_GROUP}" {shape} pos="{obstacle.x!r} {obstacle.y!r} {obstacle.height / 2!r}"/>"""
+
+
+def mjcf(profile: RobotProfile, wheel_radius: float, obstacles: Sequence[Box | Cylinder] = ()) -> str:
+    """The MJCF text of ``profile`` with wheels of physical radius ``wheel_radius`` and the fixed ``obstacles``.
+
+    Floats are written exactly (repr), so the same inputs always compile to the same model.
+    """
     g, a = profile.geometry, profile.actuator
     half = g.wheel_separation / 2
     wheels = "".join(
@@ -62,11 +84,11 @@ def mjcf(profile: RobotProfile, wheel_radius: float) -> str:
   <option timestep="{1 / PHYSICS_HZ!r}" integrator="implicitfast" cone="elliptic" impratio="10"/>
   <default>
     <default class="contact">
-      <geom priority="1" solref="{CONTACT_SOLREF}" solimp="{CONTACT_SOLIMP}"/>
+      <geom group="{ROBOT_GROUP}" priority="1" solref="{CONTACT_SOLREF}" solimp="{CONTACT_SOLIMP}"/>
     </default>
   </default>
   <worldbody>
-    <geom name="floor" type="plane" size="0 0 1"/>
+    <geom name="floor" group="{FLOOR_GROUP}" type="plane" size="0 0 1"/>{"".join(_obstacle(i, o) for i, o in enumerate(obstacles))}
     <body name="base">
       <freejoint name="base"/>
       <inertial pos="{com}" mass="{g.base_mass!r}" diaginertia="{inertia}"/>{casters}{wheels}
@@ -78,11 +100,15 @@ def mjcf(profile: RobotProfile, wheel_radius: float) -> str:
 """
 
 
-def build_model(profile: RobotProfile, wheel_radius_scale: float = 1.0) -> RobotModel:
-    """Compile ``profile`` (wheels scaled by ``wheel_radius_scale``) and set each contact's margin to its static penetration."""
+def build_model(profile: RobotProfile, wheel_radius_scale: float = 1.0,
+                obstacles: Sequence[Box | Cylinder] = ()) -> RobotModel:
+    """Compile ``profile`` (wheels scaled by ``wheel_radius_scale``) among ``obstacles``, and set each robot contact's
+    margin to its static penetration."""
     wheel_radius = profile.geometry.wheel_radius * wheel_radius_scale
-    model = mujoco.MjModel.from_xml_string(mjcf(profile, wheel_radius))
-    _compensate_penetration(model)
+    model = mujoco.MjModel.from_xml_string(mjcf(profile, wheel_radius, obstacles))
+    obstacle_geoms = tuple(mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, f"obstacle_{i}")
+                           for i in range(len(obstacles)))
+    _compensate_penetration(model, obstacle_geoms)
     joints = [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, f"wheel_{side}") for side in ("left", "right")]
     actuators = [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, f"wheel_{side}") for side in ("left", "right")]
     return RobotModel(
@@ -91,17 +117,25 @@ def build_model(profile: RobotProfile, wheel_radius_scale: float = 1.0) -> Robot
         wheel_qpos=(int(model.jnt_qposadr[joints[0]]), int(model.jnt_qposadr[joints[1]])),
         wheel_qvel=(int(model.jnt_dofadr[joints[0]]), int(model.jnt_dofadr[joints[1]])),
         wheel_ctrl=(actuators[0], actuators[1]),
+        base_body=mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, "base"),
+        obstacle_geoms=obstacle_geoms,
     )
 
 
-def _compensate_penetration(model: mujoco.MjModel) -> None:
+def _compensate_penetration(model: mujoco.MjModel, obstacle_geoms: tuple[int, ...]) -> None:
     """Let the robot settle, then give each touching geom a margin equal to its penetration (so it rests at distance 0).
 
     Friction acts at the middle of the penetration, so a sinking wheel rolls on r − pen/2; with the margin the
     constraint's equilibrium moves to the surface and the rolling radius is the geometric one.
     """
+    # The robot settles at the origin, where an obstacle may stand: obstacles do not collide meanwhile.
+    saved = [(int(model.geom_contype[g]), int(model.geom_conaffinity[g])) for g in obstacle_geoms]
+    model.geom_contype[list(obstacle_geoms)] = 0
+    model.geom_conaffinity[list(obstacle_geoms)] = 0
     data = mujoco.MjData(model)
     mujoco.mj_step(model, data, nstep=SETTLE_STEPS)
+    for geom, (contype, conaffinity) in zip(obstacle_geoms, saved):
+        model.geom_contype[geom], model.geom_conaffinity[geom] = contype, conaffinity
     floor = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "floor")
     for contact in data.contact[: data.ncon]:
         robot_geom = contact.geom2 if contact.geom1 == floor else contact.geom1

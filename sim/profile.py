@@ -2,18 +2,13 @@
 from __future__ import annotations
 
 import functools
-import sys
+import tomllib
 from pathlib import Path
 from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from sim.clock import PHYSICS_HZ
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
 
 ROBOTS_DIR = Path(__file__).parent / "robots"
 
@@ -124,6 +119,63 @@ class TfConfig(_Model):
     child: str
 
 
+class ImuConfig(_Model):
+    """An IMU on the base: orientation, body angular velocity and proper acceleration (gravity included)."""
+
+    topic: str
+    rate_hz: int = Field(gt=0)
+    frame_id: str
+
+
+class JointConfig(_Model):
+    """One wheel joint as the robot names it, and which side's wheel it turns with."""
+
+    name: str
+    wheel: Literal["left", "right"]
+
+
+class JointStatesConfig(_Model):
+    """sensor_msgs/JointState of the wheel joints: positions always, velocities when the publisher fills them."""
+
+    topic: str
+    rate_hz: int = Field(gt=0)
+    frame_id: str = ""
+    joints: list[JointConfig] = Field(min_length=1)
+    velocities: bool = False
+
+
+class ScanConfig(_Model):
+    """A planar laser scanner: ``samples`` beams from ``angle_min`` to ``angle_max`` (inclusive) about the frame's z.
+
+    ``mount`` is the scanner's position in the base frame. Beams that hit nothing between ``range_min`` and
+    ``range_max`` read +inf, as Gazebo's ray sensor reports them.
+    """
+
+    topic: str
+    rate_hz: int = Field(gt=0)
+    frame_id: str
+    mount: Vec3
+    samples: int = Field(ge=2)
+    angle_min: float
+    angle_max: float
+    range_min: float = Field(ge=0)
+    range_max: PositiveFloat
+
+    @model_validator(mode="after")
+    def _check(self) -> ScanConfig:
+        if self.angle_max <= self.angle_min or self.range_max <= self.range_min:
+            raise ValueError("expected angle_min < angle_max and range_min < range_max")
+        return self
+
+
+class Sensors(_Model):
+    """The robot's sensor topics besides odometry (each optional)."""
+
+    imu: ImuConfig | None = None
+    joint_states: JointStatesConfig | None = None
+    scan: ScanConfig | None = None
+
+
 class BaseMode(_Model):
     """One way the robot's base can behave (simulated plugin, real firmware, ...): everything that differs between them."""
 
@@ -134,6 +186,7 @@ class BaseMode(_Model):
     driver: DriverConfig
     odometry: OdometryConfig
     tf: TfConfig | None = None
+    sensors: Sensors = Sensors()
 
 
 class RobotProfile(_Model):
@@ -155,6 +208,10 @@ class RobotProfile(_Model):
             rates = {"control_rate_hz": mode.control_rate_hz, "odometry.rate_hz": mode.odometry.rate_hz}
             if mode.tf is not None:
                 rates["tf.rate_hz"] = mode.tf.rate_hz
+            for sensor in ("imu", "joint_states", "scan"):
+                config = getattr(mode.sensors, sensor)
+                if config is not None:
+                    rates[f"sensors.{sensor}.rate_hz"] = config.rate_hz
             for field, rate in rates.items():
                 if PHYSICS_HZ % rate:
                     raise ValueError(

@@ -31,6 +31,7 @@ class TransformSample:
     """One transform the robot stack broadcasts on /tf at ``t_ns``."""
 
     t_ns: int
+    topic: str
     frame_id: str
     child_frame_id: str
     translation: Vec3
@@ -42,6 +43,9 @@ class GroundTruthSample:
     """The true world pose and body twist of the robot base at ``t_ns`` (recorded, never shown to the node)."""
 
     t_ns: int
+    topic: str
+    frame_id: str
+    child_frame_id: str
     position: Vec3
     orientation: Quat
     linear: Vec3
@@ -58,4 +62,94 @@ class CommandSample:
     angular: Vec3
 
 
-Sample = OdometrySample | TransformSample | GroundTruthSample | CommandSample
+@dataclass(frozen=True, slots=True)
+class ImuSample:
+    """What the IMU publishes at ``t_ns`` (sensor_msgs/Imu fields; covariances are zero: a noise-free sensor)."""
+
+    t_ns: int
+    topic: str
+    frame_id: str
+    orientation: Quat
+    angular_velocity: Vec3  # body frame
+    linear_acceleration: Vec3  # body frame, proper acceleration (+g up at rest)
+
+
+@dataclass(frozen=True, slots=True)
+class JointStateSample:
+    """Wheel joint angles (and speeds, if the robot publishes them) at ``t_ns`` (sensor_msgs/JointState)."""
+
+    t_ns: int
+    topic: str
+    frame_id: str
+    names: tuple[str, ...]
+    positions: tuple[float, ...]
+    velocities: tuple[float, ...]  # empty when the publisher leaves them out
+
+
+@dataclass(frozen=True, slots=True)
+class ScanSample:
+    """One sweep of a planar laser scanner at ``t_ns`` (sensor_msgs/LaserScan; inf where a beam hits nothing)."""
+
+    t_ns: int
+    topic: str
+    frame_id: str
+    angle_min: float
+    angle_max: float
+    angle_increment: float
+    range_min: float
+    range_max: float
+    ranges: tuple[float, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class TurtlePoseSample:
+    """Where a turtlesim turtle is at ``t_ns`` (turtlesim/Pose: canvas metres, y up, radians)."""
+
+    t_ns: int
+    topic: str
+    x: float
+    y: float
+    theta: float
+    linear_velocity: float
+    angular_velocity: float
+
+
+@dataclass(frozen=True, slots=True)
+class ColorSample:
+    """The canvas colour under a turtlesim turtle at ``t_ns`` (turtlesim/Color)."""
+
+    t_ns: int
+    topic: str
+    r: int
+    g: int
+    b: int
+
+
+@dataclass(frozen=True, slots=True)
+class LogSample:
+    """A line the world itself logs on /rosout at ``t_ns`` (level as in rosgraph_msgs/Log: 4 is WARN)."""
+
+    t_ns: int
+    topic: str
+    level: int
+    name: str
+    msg: str
+
+
+@dataclass(frozen=True, slots=True)
+class WorldTopic:
+    """A topic the world publishes: its message type, rate, and who may see it.
+
+    ``to_nodes``: delivered to subscribing nodes (False: recorded for the grader only, like the ground truth).
+    ``shared``: nodes may publish there too (``/tf``); on any other world topic a node's messages are ignored.
+    """
+
+    topic: str
+    type: str
+    rate_hz: float
+    to_nodes: bool = True
+    shared: bool = False
+
+
+Sample = (OdometrySample | TransformSample | GroundTruthSample | CommandSample | ImuSample | JointStateSample
+          | ScanSample | TurtlePoseSample | ColorSample | LogSample)

@@ -4,7 +4,7 @@ Times are written in seconds (readable in TOML/JSON) and read by the world as in
 """
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
@@ -12,7 +12,11 @@ from sim.clock import seconds_to_ns
 from sim.profile import ProfileError, load_robot
 from sim.samples import Vec3
 
+# Worlds that are not a robot profile: exact kinematic worlds with their own module (sim/turtlesim.py).
+TURTLESIM = "turtlesim"
+
 NonNegative = Annotated[float, Field(ge=0)]
+Positive = Annotated[float, Field(gt=0)]
 
 
 class _Model(BaseModel):
@@ -25,6 +29,31 @@ class Pose2D(_Model):
     x: float = 0.0
     y: float = 0.0
     yaw: float = 0.0
+
+
+class Box(_Model):
+    """A fixed box (a wall, a crate) standing on the floor: centre, heading, and full length x width x height in metres."""
+
+    kind: Literal["box"]
+    x: float
+    y: float
+    yaw: float = 0.0
+    length: Positive
+    width: Positive
+    height: Positive = 0.5
+
+
+class Cylinder(_Model):
+    """A fixed upright cylinder (a pillar) standing on the floor."""
+
+    kind: Literal["cylinder"]
+    x: float
+    y: float
+    radius: Positive
+    height: Positive = 0.5
+
+
+Obstacle = Annotated[Union[Box, Cylinder], Field(discriminator="kind")]
 
 
 class Imperfections(_Model):
@@ -88,15 +117,20 @@ class Scenario(_Model):
     seed: int = Field(0, description="recorded with the run; the world itself is deterministic and draws no random numbers")
     imperfections: Imperfections = Imperfections()
     script: list[ScriptedCommand] = Field(default_factory=list, description="commands sent by the scripted driver")
+    obstacles: list[Obstacle] = Field(default_factory=list, description="fixed walls and pillars (empty: an open floor)")
 
     @model_validator(mode="after")
     def _check(self) -> Scenario:
-        try:
-            profile = load_robot(self.robot)
-        except ProfileError as exc:
-            raise ValueError(f"robot: {exc}") from None
-        if self.base_mode is not None and self.base_mode not in profile.modes:
-            raise ValueError(f"base_mode {self.base_mode!r} is not a mode of {self.robot}; expected one of {sorted(profile.modes)}")
+        if self.robot == TURTLESIM:
+            if self.base_mode is not None or self.obstacles or self.imperfections != Imperfections():
+                raise ValueError("turtlesim has no base modes, obstacles or imperfections; remove them from the scenario")
+        else:
+            try:
+                profile = load_robot(self.robot)
+            except ProfileError as exc:
+                raise ValueError(f"robot: {exc} (or {TURTLESIM!r})") from None
+            if self.base_mode is not None and self.base_mode not in profile.modes:
+                raise ValueError(f"base_mode {self.base_mode!r} is not a mode of {self.robot}; expected one of {sorted(profile.modes)}")
         if self.shutdown_at is not None and self.shutdown_at > self.duration:
             raise ValueError(f"shutdown_at {self.shutdown_at} s is after the end of the run (duration {self.duration} s)")
         times = [command.t for command in self.script]
@@ -121,3 +155,25 @@ class Scenario(_Model):
     def shutdown_ns(self) -> int | None:
         """World time of the Ctrl+C, if any."""
         return None if self.shutdown_at is None else self.start_ns + seconds_to_ns(self.shutdown_at)
+
+
+class ScenarioTimes:
+    """What every world says about time: now, and the run's start and end as its scenario sets them."""
+
+    scenario: Scenario
+    _time_ns: int
+
+    @property
+    def time_ns(self) -> int:
+        """Current sim time."""
+        return self._time_ns
+
+    @property
+    def start_ns(self) -> int:
+        """Sim time at which the run starts (the world was created already advanced to it)."""
+        return self.scenario.start_ns
+
+    @property
+    def end_ns(self) -> int:
+        """Sim time at which the run ends."""
+        return self.scenario.end_ns

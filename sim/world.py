@@ -7,6 +7,7 @@ ticks and the 50 Hz ground truth. Same scenario → same bits, on one machine an
 from __future__ import annotations
 
 import math
+from collections.abc import Collection
 
 import mujoco
 
@@ -15,17 +16,21 @@ from sim.clock import last_step_at, step_ns, steps_per_tick
 from sim.model import build_model
 from sim.odometry import Estimate, WheelOdometry, WorldPoseOdometry, ground_truth, quaternion_yaw
 from sim.profile import RobotProfile, covariance_matrix, load_robot
-from sim.samples import CommandSample, GroundTruthSample, OdometrySample, Sample, TransformSample
-from sim.scenario import Scenario
+from sim.samples import CommandSample, GroundTruthSample, OdometrySample, Sample, TransformSample, WorldTopic
+from sim.scenario import Scenario, ScenarioTimes
+from sim.sensors import Imu, JointStates, Scanner
 
 GROUND_TRUTH_HZ = 50  # above every odometry rate (30, 50 Hz); each sample is a recorded message
+GROUND_TRUTH_TOPIC = "/ground_truth/odom"
+GROUND_TRUTH_FRAME = "world"
+TF_TOPIC = "/tf"
 
 
 class SimError(Exception):
     """A world that cannot be built as asked, or a call that breaks the world's contract (e.g. going back in time)."""
 
 
-class World:
+class World(ScenarioTimes):
     """One run of a robot: ``command`` it, ``advance_to`` a time, collect the samples it published on the way."""
 
     def __init__(self, scenario: Scenario, profile: RobotProfile | None = None) -> None:
@@ -41,7 +46,7 @@ class World:
                 raise SimError(f"script[{i}].topic {command.topic!r} is not a command topic of {self.profile.name}; expected one of {self._topics}")
 
         geometry = self.profile.geometry
-        robot = build_model(self.profile, scenario.imperfections.wheel_radius_scale)
+        robot = build_model(self.profile, scenario.imperfections.wheel_radius_scale, scenario.obstacles)
         self.model = robot.model
         self.data = mujoco.MjData(self.model)
         pose = scenario.initial_pose
@@ -61,9 +66,19 @@ class World:
         self._odometry_every = steps_per_tick(self.mode.odometry.rate_hz)
         self._tf_every = steps_per_tick(self.mode.tf.rate_hz) if self.mode.tf is not None else None
         self._truth_every = steps_per_tick(GROUND_TRUTH_HZ)
+        sensors = self.mode.sensors
+        self._sensors: list[tuple[int, Imu | JointStates | Scanner]] = []
+        if sensors.imu is not None:
+            self._sensors.append((steps_per_tick(sensors.imu.rate_hz), Imu(sensors.imu, self.model, 0, self.data)))
+        if sensors.joint_states is not None:
+            self._sensors.append((steps_per_tick(sensors.joint_states.rate_hz), JointStates(sensors.joint_states, robot)))
+        if sensors.scan is not None:
+            self._sensors.append((steps_per_tick(sensors.scan.rate_hz), Scanner(sensors.scan, robot)))
         self._output_periods = tuple(
-            p for p in (self._odometry_every, self._tf_every, self._truth_every) if p is not None
+            p for p in (self._odometry_every, self._tf_every, self._truth_every, *(p for p, _ in self._sensors))
+            if p is not None
         )
+        self._topic_periods = {topic.topic: steps_per_tick(topic.rate_hz) for topic in self.publications}
         # The ticks repeat every `cycle` steps: precompute, for each step in the cycle, the distance to the next tick.
         self._cycle = math.lcm(self._control_every, *self._output_periods)
         ticks = [r for r in range(self._cycle) if any(r % p == 0 for p in (self._control_every, *self._output_periods))]
@@ -85,19 +100,26 @@ class World:
     # -- the contract (DEVELOPERS.md) ------------------------------------------------------------------------------
 
     @property
-    def time_ns(self) -> int:
-        """Current sim time."""
-        return self._time_ns
+    def publications(self) -> tuple[WorldTopic, ...]:
+        """Every topic this world publishes, with its type and rate (the session routes samples by these)."""
+        mode, sensors = self.mode, self.mode.sensors
+        declared = [WorldTopic(mode.odometry.topic, "nav_msgs/Odometry", mode.odometry.rate_hz)]
+        if mode.tf is not None:
+            declared.append(WorldTopic(TF_TOPIC, "tf2_msgs/TFMessage", mode.tf.rate_hz, shared=True))
+        declared.append(WorldTopic(GROUND_TRUTH_TOPIC, "nav_msgs/Odometry", GROUND_TRUTH_HZ, to_nodes=False))
+        if sensors.imu is not None:
+            declared.append(WorldTopic(sensors.imu.topic, "sensor_msgs/Imu", sensors.imu.rate_hz))
+        if sensors.joint_states is not None:
+            declared.append(WorldTopic(sensors.joint_states.topic, "sensor_msgs/JointState",
+                                        sensors.joint_states.rate_hz))
+        if sensors.scan is not None:
+            declared.append(WorldTopic(sensors.scan.topic, "sensor_msgs/LaserScan", sensors.scan.rate_hz))
+        return tuple(declared)
 
     @property
-    def start_ns(self) -> int:
-        """Sim time at which the run starts (the world was created already advanced to it)."""
-        return self.scenario.start_ns
-
-    @property
-    def end_ns(self) -> int:
-        """Sim time at which the run ends."""
-        return self.scenario.end_ns
+    def odometry_topic(self) -> str:
+        """Where the robot publishes its odometry (what graders read the robot's own belief from)."""
+        return self.mode.odometry.topic
 
     @property
     def command_topics(self) -> tuple[str, ...]:
@@ -119,14 +141,21 @@ class World:
         self._run(t_ns, out, emit=True)
         return out
 
-    def next_output_ns(self) -> int:
-        """When the next sample (odometry, /tf, ground truth or scripted command) is due."""
+    def next_output_ns(self, topics: Collection[str] | None = None) -> int | None:
+        """When the next sample (odometry, /tf, ground truth, a sensor or a scripted command) is due.
+
+        With ``topics``, only samples on those topics (and scripted commands) count: a caller that delivers only
+        to subscribers need not stop at the others, which come out of the next ``advance_to`` all the same.
+        None when nothing asked about is due.
+        """
         if self._pending:
             return self._pending[0].t_ns
-        due = [step_ns((self._k // period + 1) * period) for period in self._output_periods]
+        periods = self._output_periods if topics is None else {
+            self._topic_periods[topic] for topic in topics if topic in self._topic_periods}
+        due = [step_ns((self._k // period + 1) * period) for period in periods]
         if self._next_script < len(self._script):
             due.append(max(self._script[self._next_script][0], self._time_ns))
-        return min(due)
+        return min(due, default=None)
 
     def state(self) -> dict[str, float]:
         """Named quantities now: true pose and body twist, wheel speeds (rad/s) and servo targets, the command in force."""
@@ -183,7 +212,7 @@ class World:
             out.append(CommandSample(due_ns, topic, command.linear, command.angular))
 
     def _tick(self, k: int, out: list[Sample] | None) -> None:
-        """The driver, odometry, /tf and ground-truth ticks that fall on step ``k``; samples go to ``out`` unless None."""
+        """The driver, odometry, /tf, ground-truth and sensor ticks on step ``k``; samples go to ``out`` unless None."""
         t_ns = step_ns(k)
         if k % self._control_every == 0:
             self._command = self._latch.command_at(t_ns)
@@ -203,7 +232,13 @@ class World:
             if self._tf_every is not None and k % self._tf_every == 0:
                 tf = self.mode.tf
                 assert tf is not None
-                out.append(TransformSample(t_ns, tf.parent, tf.child, self._estimate.position, self._estimate.orientation))
+                out.append(TransformSample(t_ns, TF_TOPIC, tf.parent, tf.child, self._estimate.position, self._estimate.orientation))
             if k % self._truth_every == 0:
                 truth = ground_truth(self.data)
-                out.append(GroundTruthSample(t_ns, truth.position, truth.orientation, truth.linear, truth.angular))
+                out.append(GroundTruthSample(t_ns, GROUND_TRUTH_TOPIC, GROUND_TRUTH_FRAME, self.mode.odometry.child_frame_id,
+                                             truth.position, truth.orientation, truth.linear, truth.angular))
+        for period, sensor in self._sensors:
+            if k % period == 0:
+                sample = sensor.sample(t_ns, self.data)  # the IMU differentiates velocity: it samples even unrecorded
+                if out is not None:
+                    out.append(sample)

@@ -9,11 +9,9 @@ import numpy as np
 
 from grader.metrics.base import Measurement, Metric, MetricError, MetricParams
 from grader.metrics.motion import wrap
-from grader.metrics.run import OutputLine, RunData, Trajectory
+from grader.metrics.run import LOG_PREFIX, OutputLine, RunData, Trajectory
 
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-# rospy's console prefix: "[INFO] [1795250908.523113, 21.060000]: " (wall and sim time) must not read as numbers.
-_LOG_PREFIX = re.compile(r"^\s*\[\s*(?:DEBUG|INFO|WARN|WARNING|ERROR|FATAL)\s*\]\s*(?:\[[^\]]*\]\s*:?)?", re.I)
 _UNIT = r"(?:\s*\[?\s*(?:m|deg(?:rees)?|rad(?:ians)?|°)\s*\]?)?"
 _LABELS = {
     "x": r"(?:pos(?:ition)?[ _.]?)?x",
@@ -41,7 +39,7 @@ class PoseLine:
 
 def parse_pose(text: str) -> tuple[float, float, float] | None:
     """(x, y, yaw) from one line: labelled values (``x=``, ``yaw:``, ``theta =``), else a line of exactly 3 numbers."""
-    body = _LOG_PREFIX.sub("", text)
+    body = LOG_PREFIX.sub("", text)  # the console prefix's wall and sim times are not pose numbers
     found = {k: pattern.search(body) for k, pattern in _LABELLED.items()}
     if all(found.values()):
         return tuple(float(m.group(1)) for m in found.values())  # type: ignore[union-attr,return-value]

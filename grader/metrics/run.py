@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
@@ -80,13 +81,28 @@ class Commands:
         return np.all(np.hstack([self.linear, self.angular]) == 0.0, axis=1)
 
 
+# rospy's console prefix: "[INFO] [1795250908.523113, 21.060000]: " (wall and sim time) before the message.
+LOG_PREFIX = re.compile(
+    r"^\s*\[\s*(?P<level>DEBUG|INFO|WARN|WARNING|ERROR|FATAL)\s*\]\s*(?:\[[^\]]*\]\s*:?)?\s?", re.I)
+ROSOUT_LEVELS = {1: "DEBUG", 2: "INFO", 4: "WARN", 8: "ERROR", 16: "FATAL"}  # rosgraph_msgs/Log level values
+
+
 @dataclass(frozen=True)
 class OutputLine:
-    """One line the node wrote: sim time (s), stream (stdout, stderr, rosout, ...) and text."""
+    """One line the node wrote: sim time (s), stream (stdout, stderr, rosout, ...), text, and its log level if any."""
 
     t: float
     stream: str
     text: str
+    level: str | None = None  # DEBUG, INFO, WARN, ERROR, FATAL for /rosout; None for what the node printed
+
+    def message(self) -> tuple[str | None, str]:
+        """The log level and the message itself, without the console prefix rospy adds on stdout."""
+        prefix = LOG_PREFIX.match(self.text)
+        if prefix is None:
+            return self.level, self.text
+        level = prefix.group("level").upper()
+        return self.level or ("WARN" if level == "WARNING" else level), self.text[prefix.end():]
 
 
 @dataclass(frozen=True)
@@ -134,6 +150,11 @@ class RunData:
             return self.ground_truth
         return self.odometry
 
+    def until_shutdown(self, source: Literal["ground_truth", "odometry"]) -> Trajectory:
+        """The requested path up to the Ctrl+C, or all of it when the scenario sends none."""
+        shutdown = self.shutdown_time()
+        return self.trajectory(source).between(end=math.inf if shutdown is None else shutdown)
+
     def shutdown_time(self) -> float | None:
         """Sim time (s) of the Ctrl+C: as the run recorded it, else as the scenario planned it."""
         if self.run.shutdown_requested_s is not None:
@@ -149,7 +170,7 @@ class RunData:
             odometry=_trajectory(odom, "odometry"),
             ground_truth=None if truth is None else _trajectory(truth, "ground_truth"),
             commands=_student_commands(recording.commands()),
-            lines=tuple(OutputLine(float(t), str(s), str(text)) for t, s, text in recording.output_lines()),
+            lines=_lines(recording),
             run=RunInfo.from_metadata(getattr(recording, "metadata", None)),
             start_time=start_time,
             shutdown_at=shutdown_at,
@@ -164,6 +185,17 @@ def _decode(value: Any) -> Any:
         except json.JSONDecodeError:
             return value
     return value
+
+
+def _lines(recording: Any) -> tuple[OutputLine, ...]:
+    """The output lines, with each /rosout line's level (both lists hold /rosout in the same time order)."""
+    rosout = iter(getattr(recording, "rosout", list)())
+    lines = []
+    for t, stream, text in recording.output_lines():
+        entry = next(rosout, None) if stream == "rosout" else None
+        level = None if entry is None else ROSOUT_LEVELS.get(int(entry.level))
+        lines.append(OutputLine(float(t), str(stream), str(text), level))
+    return tuple(lines)
 
 
 def _trajectory(series: Any, source: str) -> Trajectory:
@@ -184,11 +216,17 @@ def _strings(value: Any, n: int) -> list[str]:
 
 
 def _student_commands(series: Any) -> Commands:
-    """The node's commands only: the scripted driver's are the grader's, not the student's."""
+    """The node's commands only: the scripted driver's are the grader's, not the student's.
+
+    The recording's origin marks say which channels the grader wrote; a callerid is a name a node can choose, so
+    it is only the fallback for recordings without marks (bags recorded elsewhere, older rosgrade files)."""
     t = np.asarray(series.t, dtype=float).reshape(-1)
     n = len(t)
-    caller = _strings(getattr(series, "callerid", None), n)
-    keep = np.array([c != DRIVER_CALLERID for c in caller], dtype=bool)
+    origin = getattr(series, "origin", None)
+    if origin is not None:
+        keep = np.array([o != "grader" for o in _strings(origin, n)], dtype=bool)
+    else:
+        keep = np.array([c != DRIVER_CALLERID for c in _strings(getattr(series, "callerid", None), n)], dtype=bool)
     topics = _strings(getattr(series, "topic", None), n)
     return Commands.of(
         t[keep], _column(series, "linear")[keep], _column(series, "angular")[keep],

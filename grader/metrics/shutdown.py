@@ -56,6 +56,7 @@ def measure(run: RunData, params: Params) -> Measurement:
         "exited": ended is not None,
         "exit_delay": math.nan if ended is None else ended - t_req,
         "ended_before_shutdown": ended is not None and ended < t_req,
+        "exited_before_shutdown_s": t_req - ended if ended is not None and ended < t_req else math.nan,
         "exit_code": run.run.exit_code,
         "exit_signal": None if run.run.exit_signal is None else str(run.run.exit_signal),
         "status": run.run.status,
@@ -67,7 +68,7 @@ METRIC = Metric(
     params=Params,
     quantities=frozenset({
         "zero_command_delay", "last_command_zero", "rest_time", "rest_distance", "moving_at_end", "observed_s",
-        "exited", "exit_delay", "ended_before_shutdown", "exit_code", "exit_signal", "status",
+        "exited", "exit_delay", "ended_before_shutdown", "exited_before_shutdown_s", "exit_code", "exit_signal", "status",
     }),
     measure=measure,
     needs_shutdown=True,

@@ -48,6 +48,12 @@ def _turns(traj: Trajectory, w: np.ndarray, turn_rate: float, merge_gap_s: float
     return [(i, j, float(heading[middles[n + 1]] - heading[middles[n]])) for n, (i, j) in enumerate(merged)]
 
 
+def _middle(traj: Trajectory, turn: tuple[int, int, float]) -> tuple[float, float]:
+    """The position in the middle of a turn: the corner, also for rounded corners."""
+    k = (turn[0] + turn[1]) // 2
+    return float(traj.x[k]), float(traj.y[k])
+
+
 def analyse_square(
     traj: Trajectory,
     rest_speed: float = 0.01,
@@ -57,10 +63,12 @@ def analyse_square(
     merge_gap_s: float = 0.5,
     min_pause_s: float = 0.3,
     interrupted: bool = False,
+    min_side: float = 0.05,
 ) -> SquareAnalysis:
     """Segment ``traj`` at its turns: a vertex is the middle of each turn, sides join consecutive vertices.
 
     ``interrupted``: the path was cut short by Ctrl+C, so a turn still under way at its end is not a corner.
+    Turns within ``min_side`` (m) of the start come before the first side and are left out.
     """
     if len(traj) < 3:
         raise MetricError("too few positions to analyse the path")
@@ -68,10 +76,11 @@ def analyse_square(
     turns = [t for t in _turns(traj, w, turn_rate, merge_gap_s) if abs(t[2]) >= math.radians(min_corner_deg)]
     if interrupted and turns and turns[-1][1] == len(w):
         turns.pop()
-    points = [(float(traj.x[0]), float(traj.y[0]))]
-    for i, j, _ in turns:
-        k = (i + j) // 2  # sample in the middle of the turn: the corner, also for rounded corners
-        points.append((float(traj.x[k]), float(traj.y[k])))
+    start = (float(traj.x[0]), float(traj.y[0]))
+    # Turning on the spot before the first side only sets the starting heading: it is not a corner.
+    while turns and math.dist(start, _middle(traj, turns[0])) < min_side:
+        turns.pop(0)
+    points = [start, *(_middle(traj, turn) for turn in turns)]
     rest_from = rest_since(traj, rest_speed, rest_turn_rate)
     end_point = (float(traj.x[-1]), float(traj.y[-1]))
     sides = [math.dist(a, b) for a, b in zip(points, points[1:])]
@@ -112,9 +121,8 @@ def _stat(values: np.ndarray, how: str) -> float:
 
 def measure(run: RunData, params: Params) -> Measurement:
     """Analyse the path up to Ctrl+C (if any) and summarise the sides, corners, loops and the final stop."""
-    traj = run.trajectory(params.source)
     shutdown = run.shutdown_time()
-    window = traj.between(end=shutdown if shutdown is not None else math.inf)
+    window = run.until_shutdown(params.source)
     if path_length(window) < 0.05:
         raise MetricError(f"the robot drove only {path_length(window):.2f} m, so there is no square to measure")
     sq = analyse_square(
@@ -123,8 +131,10 @@ def measure(run: RunData, params: Params) -> Measurement:
     )
     sides, corners = np.array(sq.sides), np.abs(np.array(sq.corners_deg))
     ref_side = params.side if params.side is not None else (float(np.mean(sides)) if len(sides) else math.nan)
-    side_err = float(np.max(np.abs(sides - ref_side))) if len(sides) else math.nan
+    # A side never driven is wholly wrong, so fewer than four sides can never look like a good square.
+    side_err = float(np.max(np.abs(sides - ref_side))) if len(sides) >= 4 else ref_side
     corner_err = float(np.max(np.abs(corners - params.corner_deg))) if len(corners) else math.nan
+    others = float(np.median(sides[1:])) if len(sides) > 1 else math.nan
     stopped = sq.rest_s is not None and sq.rest_s >= params.min_rest_s and shutdown is None
     return {
         "n_sides": len(sides), "n_corners": len(corners),
@@ -137,7 +147,10 @@ def measure(run: RunData, params: Params) -> Measurement:
         "loops": len(sides) / 4.0, "heading_loops": sq.heading_turns,
         "loops_at_rest": len(sides) / 4.0 if stopped else math.nan,
         "final_rest_s": sq.rest_s, "moving_at_end": sq.rest_s is None, "pauses": len(sq.pauses),
+        "side_error_rel": side_err / ref_side, "corner_error_rel": corner_err / params.corner_deg,
         "shape_error": max(side_err / ref_side, corner_err / params.corner_deg) if len(sides) >= 4 else math.nan,
+        "side_first": float(sides[0]) if len(sides) else math.nan,
+        "side_first_ratio": float(sides[0]) / others if len(sides) > 1 and others > 0 else math.nan,
     }
 
 
@@ -147,7 +160,8 @@ METRIC = Metric(
     quantities=frozenset({
         "n_sides", "n_corners", "side_mean", "side_min", "side_max", "side_worst_error", "corner_mean_deg",
         "corner_min_deg", "corner_max_deg", "corner_worst_error_deg", "closure_worst", "closure_first", "loops",
-        "heading_loops", "loops_at_rest", "final_rest_s", "moving_at_end", "pauses", "shape_error",
+        "heading_loops", "loops_at_rest", "final_rest_s", "moving_at_end", "pauses", "shape_error", "side_error_rel",
+        "corner_error_rel", "side_first", "side_first_ratio",
     }),
     measure=measure,
 )

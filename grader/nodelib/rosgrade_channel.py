@@ -9,13 +9,19 @@ import json
 import os
 import struct
 
-PROTOCOL = 1
+PROTOCOL = 2
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000
 
 MAX_FRAME_BYTES = 8 * 1024 * 1024
 MAX_JSON_BYTES = 256 * 1024
+# Field bounds of the JSON frames: the node library cuts to them, the grader's schemas refuse anything longer.
+MAX_NAME_CHARS = 256  # node, topic and type names
+MAX_LABEL_CHARS = 200  # exception type and function names
+MAX_PATH_CHARS = 4096
+MAX_MESSAGE_CHARS = 4000  # exception messages and traceback source lines
+MAX_TRACEBACK_FRAMES = 50
 
 # node -> grader
 HELLO = 1
@@ -30,23 +36,20 @@ EXCEPTION = 9
 WAIT = 10
 # grader -> node
 START = 32
-ADVANCE = 33
-DELIVER = 34
-SHUTDOWN = 35
-RESUME = 36
+BATCH = 33
 
 KIND_NAMES = {
     HELLO: "HELLO", INIT: "INIT", ADVERTISE: "ADVERTISE", SUBSCRIBE: "SUBSCRIBE", UNREGISTER: "UNREGISTER",
     PUBLISH: "PUBLISH", LOG: "LOG", OUTPUT: "OUTPUT", EXCEPTION: "EXCEPTION", WAIT: "WAIT",
-    START: "START", ADVANCE: "ADVANCE", DELIVER: "DELIVER", SHUTDOWN: "SHUTDOWN", RESUME: "RESUME",
+    START: "START", BATCH: "BATCH",
 }
 NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT})
-GRADER_KINDS = frozenset({START, ADVANCE, DELIVER, SHUTDOWN, RESUME})
-JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT,
-                        START, ADVANCE, SHUTDOWN})
+GRADER_KINDS = frozenset({START, BATCH})
+JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT, START})
 
 _HEADER = struct.Struct("<IB")
 _ID = struct.Struct("<I")
+_ID_LEN = struct.Struct("<II")
 _STREAM = struct.Struct("<B")
 
 
@@ -64,8 +67,40 @@ def encode_json(kind: int, obj: dict) -> bytes:
 
 
 def encode_id_bytes(kind: int, ident: int, data: bytes) -> bytes:
-    """A PUBLISH or DELIVER frame: a topic handle and a serialized message."""
+    """A PUBLISH frame: a topic handle and a serialized message."""
     return encode(kind, _ID.pack(ident) + data)
+
+
+def encode_batch(header: dict, deliveries: list[tuple[int, bytes]]) -> bytes:
+    """A BATCH frame: everything the node gets at one world time, so one write and one read per wake-up.
+
+    Payload: ``u32 header length | header JSON | (u32 topic handle | u32 length | message bytes)*``.
+    """
+    head = json.dumps(header, separators=(",", ":")).encode()
+    parts = [_ID.pack(len(head)), head]
+    for ident, data in deliveries:
+        parts += (_ID_LEN.pack(ident, len(data)), data)
+    return encode(BATCH, b"".join(parts))
+
+
+def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:
+    """The header object and the (topic handle, message bytes) deliveries of a BATCH payload."""
+    if len(payload) < 4:
+        raise ChannelError("BATCH frame shorter than its header length")
+    end = 4 + _ID.unpack_from(payload)[0]
+    if end > len(payload):
+        raise ChannelError("BATCH header runs past the end of the frame")
+    header = decode_json(payload[4:end])
+    deliveries = []
+    while end < len(payload):
+        if end + 8 > len(payload):
+            raise ChannelError("BATCH delivery cut short")
+        ident, size = _ID_LEN.unpack_from(payload, end)
+        end += 8 + size
+        if end > len(payload):
+            raise ChannelError("BATCH delivery runs past the end of the frame")
+        deliveries.append((ident, payload[end - size:end]))
+    return header, deliveries
 
 
 def encode_output(stream: int, text: bytes) -> bytes:
@@ -90,7 +125,7 @@ def decode_json(payload: bytes) -> dict:
         raise ChannelError(f"JSON frame of {len(payload)} bytes exceeds {MAX_JSON_BYTES}")
     try:
         obj = json.loads(payload.decode("utf-8"))
-    except (UnicodeDecodeError, ValueError) as exc:
+    except (UnicodeDecodeError, ValueError, RecursionError) as exc:
         raise ChannelError(f"frame is not valid JSON: {exc}") from None
     if not isinstance(obj, dict):
         raise ChannelError("JSON frame is not an object")

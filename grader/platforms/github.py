@@ -3,44 +3,105 @@ from __future__ import annotations
 
 import base64
 import json
+import math
 import os
 from pathlib import Path
 from typing import Any
 
 from grader.report import SubmissionReport
+from grader.reports.cause import criterion_feedback, lead_lines
+from grader.reports.escape import markdown, one_line
 from grader.reports.markdown import render_markdown
-from grader.reports.text import task_status_text
+from grader.reports.text import fmt_score
 
 RESULT_OUTPUT = "result"
+# The official reporter's log shows passed tests / tests × max_score, while Classroom records the sum of the tests'
+# scores. Both agree only if every test is worth the same and scores all or nothing: so each criterion becomes
+# as many equal "point" tests as it has units, and the submission's points are rounded to that unit.
+UNITS = (1.0, 0.5, 0.25, 0.1)
+MAX_TESTS = 200
+
+
+def point_unit(report: SubmissionReport) -> float:
+    """The largest unit that every maximum and every score is a whole number of (exact points, no rounding); when
+    no unit fits the scores, the smallest that keeps the maxima whole within MAX_TESTS tests (scores rounded)."""
+    maxima = [c.max_score for t in report.tasks for c in t.criteria] + [t.max_score for t in report.tasks if not t.criteria]
+    scores = [c.score for t in report.tasks for c in t.criteria]
+
+    def whole(values: list[float], unit: float) -> bool:
+        return all(math.isclose(v / unit, round(v / unit), abs_tol=1e-6) for v in values)
+
+    fitting = [u for u in UNITS if whole(maxima, u) and sum(round(m / u) for m in maxima) <= MAX_TESTS]
+    exact = [u for u in fitting if whole(scores, u)]
+    if exact:
+        return exact[0]
+    if fitting:
+        return fitting[-1]
+    return max(report.max_score / 100, 1e-6)  # odd weights: hundredths of the total
 
 
 def runner_result(report: SubmissionReport) -> dict[str, Any]:
-    """Runner result JSON: one test per criterion, 'pass' exactly when it got full points (so log and gradebook agree)."""
+    """Runner result JSON whose log total and Classroom points are the same number (see UNITS)."""
+    unit = point_unit(report)
     tests: list[dict[str, Any]] = []
     for task in report.tasks:
         code = f"rosgrade check . --task {task.id}"
-        if task.status != "graded" and not task.criteria:
-            tests.append(_test(f"{task.id}: {task.status}", "error", 0.0, task_status_text(task), code))
+        lead = " ".join(lead_lines(task))
+        if not task.criteria:
+            tests += _unit_tests(f"{task.id}: {task.status}", 0.0, task.max_score, unit, lead, code)
         for criterion in task.criteria:
-            status = "pass" if criterion.score >= criterion.max_score else "fail"
-            message = criterion.feedback if criterion.visibility == "visible" else ""
-            tests.append(_test(f"{task.id}: {criterion.title or criterion.id}", status, criterion.score, message, code))
-    statuses = {t["status"] for t in tests}
-    overall = "error" if "error" in statuses else "fail" if "fail" in statuses or not tests else "pass"
-    return {"version": 1, "status": overall, "max_score": report.max_score, "tests": tests}
+            message = criterion_feedback(task, criterion) if criterion.visibility == "visible" else ""
+            if lead and not criterion.passed:
+                message = f"{lead} {message}"
+            tests += _unit_tests(f"{task.id}: {criterion.title or criterion.id}", criterion.score,
+                                 criterion.max_score, unit, message, code)
+    overall = "fail" if not tests or any(t["status"] != "pass" for t in tests) else "pass"
+    return {"version": 1, "status": overall, "max_score": _round(len(tests) * unit), "tests": tests}
+
+
+def _unit_tests(name: str, score: float, max_score: float, unit: float, message: str, code: str) -> list[dict[str, Any]]:
+    """A criterion as `max_score / unit` tests of one unit each, the first `score / unit` (rounded) passed."""
+    count = max(1, round(max_score / unit))
+    passed = min(count, max(0, round(score / unit + 1e-9)))
+    return [
+        _test(name if count == 1 else f"{name} ({i + 1}/{count})", "pass" if i < passed else "fail",
+              unit if i < passed else 0.0, message if i == 0 else "", code)
+        for i in range(count)
+    ]
+
+
+def _round(value: float) -> float:
+    return round(value, 6)
 
 
 def _test(name: str, status: str, score: float, message: str, code: str) -> dict[str, Any]:
     return {
-        "name": name,
+        "name": _log_safe(name),
         "status": status,
-        "score": score,
-        "message": message,
+        "score": _round(score),
+        "message": _log_safe(message),
         "test_code": code,
         "filename": "",
         "line_no": 0,
         "duration": 0,
     }
+
+
+def _log_safe(text: str) -> str:
+    """One line without terminal controls that cannot start an Actions workflow command (`::set-output` ...)."""
+    line = one_line(text)
+    return f" {line}" if line.startswith("::") else line
+
+
+def classroom_points(result: dict[str, Any]) -> tuple[float, float]:
+    """(points, maximum) as the reporter sends them to Classroom: the sum of the test scores, and max_score."""
+    return _round(sum(t["score"] for t in result["tests"])), float(result["max_score"])
+
+
+def log_points(result: dict[str, Any]) -> float:
+    """The points the reporter prints in the Actions log: passed tests / tests × max_score."""
+    tests = result["tests"]
+    return _round(sum(t["status"] == "pass" for t in tests) / len(tests) * result["max_score"]) if tests else 0.0
 
 
 def encode_result(result: dict[str, Any]) -> str:
@@ -65,7 +126,10 @@ def step_summary(report: SubmissionReport, artifact: str = "rosgrade-report") ->
     text = render_markdown(report, public_only=True, heading_level=2)
     url = run_url()
     where = f"the [`{artifact}` artifact]({url}#artifacts)" if url else f"the `{artifact}` artifact of this run"
-    return text + f"\nPlots of your robot's path and commands are in `report.html` in {where}.\n"
+    unit = point_unit(report)
+    rounding = "" if unit == 1.0 and report.score == round(report.score) else \
+        f" Classroom records the points in steps of {fmt_score(unit)}."
+    return text + f"\nPlots of your robot's path and commands are in `report.html` in {where}.{rounding}\n"
 
 
 def write_summary(path: Path, report: SubmissionReport) -> None:
@@ -74,6 +138,12 @@ def write_summary(path: Path, report: SubmissionReport) -> None:
         handle.write(step_summary(report))
 
 
-def runner_failure(message: str) -> dict[str, Any]:
-    """A runner result for a submission that could not be graded at all."""
-    return {"version": 1, "status": "error", "max_score": 0, "tests": [_test("rosgrade", "error", 0.0, message, "rosgrade check .")]}
+def failure_summary(message: str) -> str:
+    """The step summary for a submission that could not be graded at all."""
+    return f"## rosgrade could not grade this submission\n\n{markdown(message)}\n"
+
+
+def runner_failure(message: str, max_score: float = 0.0) -> dict[str, Any]:
+    """A runner result for a submission that could not be graded: 0 points of the assignment's real maximum."""
+    return {"version": 1, "status": "error", "max_score": _round(max_score),
+            "tests": [_test("rosgrade", "error", 0.0, message, "rosgrade check .")]}

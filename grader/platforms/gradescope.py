@@ -8,8 +8,10 @@ from typing import Any
 
 from grader.report import SubmissionReport, TaskReport
 from grader.reports.files import write_atomic
-from grader.reports.markdown import criterion_markdown
-from grader.reports.text import fmt_points, percent, task_status_text
+from grader.reports.cause import criterion_feedback, criterion_measured, lead_lines, noticed
+from grader.reports.escape import markdown, one_line
+from grader.reports.markdown import criterion_markdown, noticed_markdown
+from grader.reports.text import fmt_points, percent
 
 UNFINISHED_MESSAGE = (
     "rosgrade started grading but did not finish, so no points could be given. The usual causes are a node that "
@@ -20,9 +22,9 @@ UNFINISHED_MESSAGE = (
 
 def _task_problem_test(task: TaskReport, number: str) -> dict[str, Any]:
     """A test explaining why a task was not graded normally; it carries the task's points only if no criterion does."""
-    lines = [task_status_text(task)] + ([""] + [f"- {d}" for d in task.diagnostics] if task.diagnostics else [])
+    lines = [markdown(line) + "\n" for line in lead_lines(task)] + noticed_markdown(noticed(task))
     test: dict[str, Any] = {
-        "name": f"{task.title or task.id}: {task.status.replace('_', ' ')}",
+        "name": one_line(f"{task.title or task.id}: {task.status.replace('_', ' ')}"),
         "number": number,
         "status": "failed",
         "output": "\n".join(lines),
@@ -46,18 +48,25 @@ def gradescope_results(report: SubmissionReport, execution_time: float | None = 
                 {
                     "score": criterion.score,
                     "max_score": criterion.max_score,
-                    "name": f"{task.title or task.id}: {criterion.title or criterion.id}",
+                    "name": one_line(f"{task.title or task.id}: {criterion.title or criterion.id}"),
                     "number": f"{i}.{j}",
-                    "output": criterion_markdown(criterion),
+                    "output": criterion_markdown(criterion.model_copy(
+                        update={"feedback": criterion_feedback(task, criterion),
+                                "measured": criterion.measured if criterion_measured(task, criterion) else {}})),
                     "output_format": "md",
                     "tags": [task.id, criterion.id],
                     "visibility": criterion.visibility,
                 }
             )
+    summary = [f"**rosgrade {markdown(report.rosgrade_version, line_start=False)}: {fmt_points(report.score, report.max_score)} "
+               f"({percent(report):.0f} %)**"]
+    for task in report.tasks:  # the crash and the notes are often the whole answer: show them on top
+        lines = [markdown(line) for line in lead_lines(task)] + noticed_markdown(noticed(task))
+        if lines:
+            summary += ["", f"**{markdown(task.title or task.id, line_start=False)}**", ""] + lines
     results: dict[str, Any] = {
         "score": report.score,
-        "output": f"**rosgrade {report.rosgrade_version}: {fmt_points(report.score, report.max_score)} "
-        f"({percent(report):.0f} %)**",
+        "output": "\n".join(summary),
         "output_format": "md",
         "tests": tests,
         "extra_data": {"rosgrade_version": report.rosgrade_version, "max_score": report.max_score},
@@ -73,13 +82,13 @@ def gradescope_failure(message: str, max_score: float | None = None) -> dict[str
         "name": "rosgrade could not grade this submission",
         "score": 0.0,
         "status": "failed",
-        "output": message,
+        "output": markdown(message),
         "output_format": "md",
         "visibility": "visible",
     }
     if max_score is not None:
         test["max_score"] = max_score
-    return {"score": 0.0, "output": message, "output_format": "md", "tests": [test]}
+    return {"score": 0.0, "output": markdown(message), "output_format": "md", "tests": [test]}
 
 
 def write_results(path: Path, results: dict[str, Any]) -> Path:

@@ -6,12 +6,14 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from grader.report import SubmissionReport
+from grader.report import SubmissionReport, TaskReport
 from grader.reports.files import write_atomic
+from grader.reports.cause import criterion_feedback, criterion_measured, lead_lines, noticed
+from grader.reports.escape import one_line, plain
 from grader.reports.html import data_uri
 from grader.reports.markdown import HIDDEN_TEXT
 from grader.reports.plots import Plot
-from grader.reports.text import fmt_points, is_public, measured_text, percent, task_status_text
+from grader.reports.text import NOTICED_HEADING, fmt_points, is_public, percent
 
 MAX_BYTES = 1_000_000
 # Trajectory plots first: they are what students look at; commands and printed pose only if there is room.
@@ -23,7 +25,7 @@ def prairielearn_results(report: SubmissionReport, plots: Sequence[Plot] = (), m
     tests = []
     for task in report.tasks:
         if task.status != "graded" and not task.criteria:
-            tests.append(_test(task.id, task.title, 0.0, task.max_score, task_status_text(task), ""))
+            tests.append(_test(task.id, task.title, 0.0, task.max_score, " ".join(lead_lines(task)), ""))
         for c in task.criteria:
             public = is_public(c)
             tests.append(
@@ -32,8 +34,8 @@ def prairielearn_results(report: SubmissionReport, plots: Sequence[Plot] = (), m
                     task.title,
                     c.score,
                     c.max_score,
-                    c.feedback if public else HIDDEN_TEXT,
-                    measured_text(c.measured) if public else "",
+                    criterion_feedback(task, c) if public else HIDDEN_TEXT,
+                    criterion_measured(task, c) if public else "",
                 )
             )
     score = report.score / report.max_score if report.max_score > 0 else 0.0
@@ -41,7 +43,7 @@ def prairielearn_results(report: SubmissionReport, plots: Sequence[Plot] = (), m
         "gradable": True,
         "score": min(1.0, max(0.0, score)),
         "message": f"rosgrade: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)",
-        "output": "\n".join(filter(None, (task_status_text(t) for t in report.tasks))),
+        "output": plain("\n".join(_task_output(t) for t in report.tasks if lead_lines(t) or t.diagnostics)),
         "tests": tests,
         "images": [],
     }
@@ -52,14 +54,23 @@ def prairielearn_results(report: SubmissionReport, plots: Sequence[Plot] = (), m
     return results
 
 
+def _task_output(task: TaskReport) -> str:
+    """A task's crash, status and notes as plain text (PrairieLearn shows `output` preformatted)."""
+    notes = noticed(task)
+    lines = [f"{task.title or task.id}:", *lead_lines(task)]
+    if notes:
+        lines += [f"{NOTICED_HEADING}:", *(f"- {n}" for n in notes)]
+    return "\n".join(lines) + "\n"
+
+
 def _test(name: str, description: str, points: float, max_points: float, message: str, output: str) -> dict[str, Any]:
     return {
-        "name": name,
-        "description": description,
+        "name": one_line(name),
+        "description": one_line(description),
         "points": points,
         "max_points": max_points,
-        "message": message,
-        "output": output,
+        "message": plain(message),
+        "output": plain(output),
     }
 
 
@@ -69,7 +80,7 @@ def _size(results: dict[str, Any]) -> int:
 
 def prairielearn_failure(message: str) -> dict[str, Any]:
     """Results for input that cannot be graded: not gradable, so the student does not lose an attempt."""
-    return {"gradable": False, "score": 0.0, "format_errors": [message], "message": message}
+    return {"gradable": False, "score": 0.0, "format_errors": [plain(message)], "message": plain(message)}
 
 
 def write_results(path: Path, results: dict[str, Any]) -> Path:

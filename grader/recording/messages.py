@@ -1,6 +1,6 @@
 """ROS 1 message types rosgrade knows: schema text, md5sum and strict decoding of untrusted bytes.
 
-Built on rosbags' Noetic type store (plus tf2_msgs and std_srvs, which it lacks), so definitions and md5sums are
+Built on rosbags' Noetic type store (plus tf2_msgs, turtlesim and std_srvs, which it lacks), so definitions and md5sums are
 exactly what `gendeps --cat` and genpy give without a ROS install.
 """
 from __future__ import annotations
@@ -19,7 +19,11 @@ _TYPE_NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)/(?:msg/)?([A-Za-z][A-Za-z0-9_
 # Packages the Noetic store holds that are not ROS 1 message packages (ROS 2 time types used internally).
 _HIDDEN_PACKAGES = frozenset({"builtin_interfaces"})
 
-_EXTRA_TYPES = {"tf2_msgs/TFMessage": "geometry_msgs/TransformStamped[] transforms\n"}
+_EXTRA_TYPES = {
+    "tf2_msgs/TFMessage": "geometry_msgs/TransformStamped[] transforms\n",
+    "turtlesim/Pose": "float32 x\nfloat32 y\nfloat32 theta\n\nfloat32 linear_velocity\nfloat32 angular_velocity\n",
+    "turtlesim/Color": "uint8 r\nuint8 g\nuint8 b\n",
+}
 
 # std_srvs services as (request, response) definitions; all primitive-only, so their md5 text is the text itself.
 _SERVICES = {

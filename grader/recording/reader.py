@@ -87,8 +87,19 @@ class Recording:
         counts = dict.fromkeys(self._source.channels, 0)
         for key, _, _ in self._source.messages:
             counts[key] += 1
-        infos = [TopicInfo(c.topic, c.type, c.callerid, counts[c.key]) for c in self._source.channels.values()]
+        infos = [TopicInfo(c.topic, c.type, c.callerid, counts[c.key], c.origin)
+                 for c in self._source.channels.values()]
         return sorted(infos)
+
+    def _marks_origin(self) -> bool:
+        """Whether the file says who published each channel (rosgrade's recordings do)."""
+        return any(c.origin for c in self._source.channels.values())
+
+    def _world_channels(self, topic: str | None = None, type_name: str | None = None) -> list[ChannelInfo]:
+        """Channels the simulated world published, when the file says; every matching channel otherwise (a bag
+        recorded on a robot). A node's channel on the same topic, whatever its callerid, is never among them."""
+        channels = self._channels(topic, type_name)
+        return [c for c in channels if c.origin == "world"] if self._marks_origin() else channels
 
     def _raw(self, channels: list[ChannelInfo]) -> Iterator[tuple[ChannelInfo, int, bytes]]:
         wanted = {c.key: c for c in channels}
@@ -111,7 +122,7 @@ class Recording:
 
     def odometry_topic(self) -> str | None:
         """The robot's odometry topic: named in the metadata, else the simulator's (/odom first), else /odom or any."""
-        odometry = [c for c in self._channels(type_name=ODOMETRY) if c.topic != GROUND_TRUTH_TOPIC]
+        odometry = [c for c in self._world_channels(type_name=ODOMETRY) if c.topic != GROUND_TRUTH_TOPIC]
         names = {c.topic for c in odometry}
         info = self.metadata.get("rosgrade", {})
         robot = info.get("robot")
@@ -141,7 +152,7 @@ class Recording:
         return self._pose_twist(GROUND_TRUTH_TOPIC)
 
     def _pose_twist(self, topic: str) -> TimeSeries | None:
-        channels = self._channels(topic, ODOMETRY)
+        channels = self._world_channels(topic, ODOMETRY)
         if not channels:
             return None
         rows: list[_PoseTwist] = []
@@ -190,17 +201,20 @@ class Recording:
         values: list[tuple[Vec3, Vec3]] = []
         topic_names: list[str] = []
         callerids: list[str] = []
+        origins: list[str] = []
         for channel, stamp, data in self._raw(channels):
             values.append(decode_twist(data) if self._fast_ros1(channel) else self._generic_twist(data, channel))
             t_ns.append(stamp)
             topic_names.append(channel.topic)
             callerids.append(channel.callerid)
+            origins.append(channel.origin)
         return CommandSeries(
             t=seconds(t_ns),
             linear=np.array([v[0] for v in values], dtype=np.float64).reshape(-1, 3),
             angular=np.array([v[1] for v in values], dtype=np.float64).reshape(-1, 3),
             topic=np.array(topic_names, dtype=object),
             callerid=np.array(callerids, dtype=object),
+            origin=np.array(origins, dtype=object) if self._marks_origin() else None,
         )
 
     def _generic_twist(self, data: bytes, channel: ChannelInfo) -> tuple[Vec3, Vec3]:

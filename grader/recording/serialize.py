@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING
 from grader.recording.errors import RecordingError
 
 if TYPE_CHECKING:
-    from sim.samples import GroundTruthSample, OdometrySample, TransformSample, Vec3
+    from sim.samples import (ColorSample, GroundTruthSample, ImuSample, JointStateSample, LogSample, OdometrySample,
+                             ScanSample, TransformSample, TurtlePoseSample, Vec3)
 
 _U32 = struct.Struct("<I")
 _HEADER = struct.Struct("<III")  # std_msgs/Header: seq, stamp.secs, stamp.nsecs (then frame_id)
@@ -23,8 +24,13 @@ _TRANSFORM = struct.Struct("<7d")  # translation xyz, rotation xyzw
 _ODOMETRY = struct.Struct("<85d")  # pose 7 + covariance 36 + twist 6 + covariance 36
 _POSE = struct.Struct("<7d")
 _TF_ONE = _U32.pack(1)  # TFMessage.transforms has one element
+_IMU = struct.Struct("<4d9d3d9d3d9d")  # orientation + covariance, angular velocity + cov, linear acceleration + cov
+_SCAN = struct.Struct("<7f")  # angle_min, angle_max, angle_increment, time_increment, scan_time, range_min, range_max
+_TURTLE_POSE = struct.Struct("<5f")  # turtlesim/Pose: x, y, theta, linear_velocity, angular_velocity
+_COLOR = struct.Struct("<3B")
 _LOG_LEVELS = frozenset({1, 2, 4, 8, 16})
 _ZERO_COVARIANCE = (0.0,) * 36
+_ZERO_COVARIANCE_3 = (0.0,) * 9
 _NS = 1_000_000_000
 _MAX_T_NS = (1 << 32) * _NS  # ROS 1 time is two uint32
 
@@ -84,15 +90,13 @@ def odometry_bytes(sample: OdometrySample, seq: int) -> bytes:
     )
 
 
-def ground_truth_bytes(
-    sample: GroundTruthSample, seq: int, frame_id: str = "world", child_frame_id: str = "base_link"
-) -> bytes:
+def ground_truth_bytes(sample: GroundTruthSample, seq: int) -> bytes:
     """nav_msgs/Odometry of the true world pose and body twist (zero covariance)."""
     return _odometry(
         seq,
         sample.t_ns,
-        frame_id,
-        child_frame_id,
+        sample.frame_id,
+        sample.child_frame_id,
         (*sample.position, *sample.orientation),
         _ZERO_COVARIANCE,
         (*sample.linear, *sample.angular),
@@ -107,6 +111,43 @@ def tf_bytes(sample: TransformSample, seq: int) -> bytes:
         return _TF_ONE + _header(seq, sample.t_ns, sample.frame_id) + _frame(sample.child_frame_id) + body
     except struct.error as exc:
         raise RecordingError(f"cannot serialize tf2_msgs/TFMessage: {exc}") from None
+
+
+def imu_bytes(sample: ImuSample, seq: int) -> bytes:
+    """sensor_msgs/Imu with zero covariances (a noise-free sensor that knows all three quantities)."""
+    try:
+        body = _IMU.pack(*sample.orientation, *_ZERO_COVARIANCE_3, *sample.angular_velocity, *_ZERO_COVARIANCE_3,
+                         *sample.linear_acceleration, *_ZERO_COVARIANCE_3)
+        return _header(seq, sample.t_ns, sample.frame_id) + body
+    except struct.error as exc:
+        raise RecordingError(f"cannot serialize sensor_msgs/Imu: {exc}") from None
+
+
+def _float64_array(values: Sequence[float]) -> bytes:
+    return _U32.pack(len(values)) + struct.pack(f"<{len(values)}d", *values)
+
+
+def joint_state_bytes(sample: JointStateSample, seq: int) -> bytes:
+    """sensor_msgs/JointState: names and positions, velocities if given, no efforts."""
+    try:
+        return b"".join((_header(seq, sample.t_ns, sample.frame_id), _U32.pack(len(sample.names)),
+                         *(_frame(name) for name in sample.names), _float64_array(sample.positions),
+                         _float64_array(sample.velocities), _U32.pack(0)))
+    except struct.error as exc:
+        raise RecordingError(f"cannot serialize sensor_msgs/JointState: {exc}") from None
+
+
+def laser_scan_bytes(sample: ScanSample, seq: int) -> bytes:
+    """sensor_msgs/LaserScan as Gazebo's laser plugin fills it: instantaneous (time_increment and scan_time 0),
+    float32 ranges, and one zero intensity per beam."""
+    n = len(sample.ranges)
+    try:
+        return b"".join((_header(seq, sample.t_ns, sample.frame_id),
+                         _SCAN.pack(sample.angle_min, sample.angle_max, sample.angle_increment, 0.0, 0.0,
+                                    sample.range_min, sample.range_max),
+                         _U32.pack(n), struct.pack(f"<{n}f", *sample.ranges), _U32.pack(n), bytes(4 * n)))
+    except struct.error as exc:
+        raise RecordingError(f"cannot serialize sensor_msgs/LaserScan: {exc}") from None
 
 
 def twist_bytes(linear: Vec3, angular: Vec3) -> bytes:
@@ -157,6 +198,27 @@ def log_bytes(
         )
     except struct.error as exc:
         raise RecordingError(f"cannot serialize rosgraph_msgs/Log: {exc}") from None
+
+
+def world_log_bytes(sample: LogSample, seq: int) -> bytes:
+    """rosgraph_msgs/Log of a line the world itself logs (turtlesim's wall warning)."""
+    return log_bytes(sample.t_ns, seq, sample.level, sample.name, sample.msg)
+
+
+def turtle_pose_bytes(sample: TurtlePoseSample, seq: int) -> bytes:  # noqa: ARG001 -- turtlesim/Pose has no header
+    """turtlesim/Pose (float32 fields, as turtlesim publishes them)."""
+    try:
+        return _TURTLE_POSE.pack(sample.x, sample.y, sample.theta, sample.linear_velocity, sample.angular_velocity)
+    except (struct.error, OverflowError) as exc:
+        raise RecordingError(f"cannot serialize turtlesim/Pose: {exc}") from None
+
+
+def color_bytes(sample: ColorSample, seq: int) -> bytes:  # noqa: ARG001 -- turtlesim/Color has no header
+    """turtlesim/Color."""
+    try:
+        return _COLOR.pack(sample.r, sample.g, sample.b)
+    except struct.error as exc:
+        raise RecordingError(f"cannot serialize turtlesim/Color: {exc}") from None
 
 
 def decode_twist(data: bytes | bytearray | memoryview) -> tuple[Vec3, Vec3]:

@@ -32,6 +32,7 @@ class CommandSeries:
     angular: np.ndarray
     topic: np.ndarray  # str objects
     callerid: np.ndarray  # str objects ("" when the format has none)
+    origin: np.ndarray | None = None  # str objects: 'world' | 'grader' | 'node'; None when the recording does not say
 
     def __len__(self) -> int:
         return len(self.t)
@@ -88,6 +89,7 @@ class TopicInfo(NamedTuple):
     type: str  # ROS 1 spelling, e.g. geometry_msgs/Twist
     callerid: str
     count: int
+    origin: str = ""  # 'world' | 'grader' | 'node' in rosgrade's recordings; "" when the file does not say
 
 
 def yaw_from_quaternion(qx: np.ndarray, qy: np.ndarray, qz: np.ndarray, qw: np.ndarray) -> np.ndarray:

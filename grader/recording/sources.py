@@ -12,14 +12,16 @@ from pathlib import Path
 
 from mcap.exceptions import EndOfFile
 from mcap.records import Channel as McapChannel
-from mcap.records import Footer, Header, Message, Metadata, Schema
-from mcap.stream_reader import CRCValidationError, StreamReader
+from mcap.records import Footer, Header, Metadata, Schema
+from mcap.stream_reader import CRCValidationError
 from rosbags.highlevel import AnyReader
 from rosbags.interfaces import ConnectionExtRosbag1
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 from rosbags.typesys.store import Typestore
 
+from grader import timing
 from grader.recording.errors import RecordingError
+from grader.recording.mcap_records import mcap_records
 from grader.recording.messages import ros1_type_name
 
 MCAP_MAGIC = b"\x89MCAP0\r\n"
@@ -38,6 +40,7 @@ class ChannelInfo:
     callerid: str
     latching: bool
     md5sum: str  # of the file's own definition; "" for ROS 2
+    origin: str = ""  # 'world' | 'grader' | 'node' in rosgrade's recordings; "" when the file does not say
 
 
 @dataclass
@@ -76,7 +79,11 @@ def _describe(exc: BaseException) -> str:
 
 def load(path: str | Path) -> Source:
     """Read a recording of any supported format, telling the format by content rather than by name."""
-    path = Path(path)
+    with timing.stage("reading recordings"):
+        return _load(Path(path))
+
+
+def _load(path: Path) -> Source:
     if not path.exists():
         raise _unreadable(path, "no such file or directory")
     if path.is_dir():
@@ -111,32 +118,31 @@ def _mcap_profile(head: bytes) -> str | None:
 
 
 def _load_mcap_ros1(path: Path) -> Source:
-    """Stream every record; on damage keep what came before and say where it stopped."""
+    """Read every record; on damage keep what came before and say where it stopped."""
     schemas: dict[int, Schema] = {}
     raw_channels: dict[int, McapChannel] = {}
     messages: list[tuple[int, int, bytes]] = []
     metadata: dict[str, dict[str, str]] = {}
     truncated: str | None = None
     seen_header = seen_footer = False
-    with open(path, "rb") as file:
-        # A record longer than the file is corrupt: refuse it before allocating.
-        reader = StreamReader(file, validate_crcs=True, record_size_limit=max(path.stat().st_size, 1))
-        try:
-            for record in reader.records:
-                if isinstance(record, Message):
-                    messages.append((record.channel_id, record.log_time, record.data))
-                elif isinstance(record, McapChannel):
-                    raw_channels.setdefault(record.id, record)
-                elif isinstance(record, Schema):
-                    schemas.setdefault(record.id, record)
-                elif isinstance(record, Metadata):
-                    metadata[record.name] = dict(record.metadata)
-                elif isinstance(record, Header):
-                    seen_header = True
-                elif isinstance(record, Footer):
-                    seen_footer = True
-        except Exception as exc:  # noqa: BLE001 - mcap raises assorted errors on damaged input
-            truncated = _mcap_damage(exc)
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise _unreadable(path, exc.strerror or str(exc)) from None
+    try:
+        for record in mcap_records(data, messages):
+            if isinstance(record, McapChannel):
+                raw_channels.setdefault(record.id, record)
+            elif isinstance(record, Schema):
+                schemas.setdefault(record.id, record)
+            elif isinstance(record, Metadata):
+                metadata[record.name] = dict(record.metadata)
+            elif isinstance(record, Header):
+                seen_header = True
+            elif isinstance(record, Footer):
+                seen_footer = True
+    except Exception as exc:  # noqa: BLE001 - mcap raises assorted errors on damaged input
+        truncated = _mcap_damage(exc)
     if not seen_header:
         raise _unreadable(path, truncated or "no MCAP header")
     if not seen_footer and truncated is None:
@@ -162,6 +168,7 @@ def _load_mcap_ros1(path: Path) -> Source:
             channel.metadata.get("callerid", ""),
             channel.metadata.get("latching", "false").lower() in ("true", "1"),
             md5sum,
+            channel.metadata.get("origin", ""),
         )
     source.messages = sorted((m for m in messages if m[0] in source.channels), key=lambda m: m[1])
     return source

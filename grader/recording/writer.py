@@ -16,6 +16,9 @@ from grader.recording.messages import MessageCatalog, default_catalog, ros1_type
 
 # Metadata record the recorder adds when the size cap dropped messages.
 CAP_METADATA = "rosgrade.recording"
+# Who published a channel, as the grader knows it (channel metadata "origin"): the simulated world, the grader itself
+# (its scripted driver), or a node. Unlike a callerid, a node cannot choose it.
+ORIGINS = ("world", "grader", "node")
 
 
 @dataclass(slots=True)
@@ -41,7 +44,7 @@ def metadata_strings(name: str, values: Mapping[str, object]) -> dict[str, str]:
 
 
 class Recorder:
-    """Writes messages to a ROS 1 MCAP: one schema per type, one channel per (topic, callerid), sim-time stamps.
+    """Writes messages to a ROS 1 MCAP: one schema per type, one channel per (topic, callerid, origin), sim-time stamps.
 
     ``max_bytes`` caps the total payload; messages beyond it are dropped, counted and noted in the
     ``rosgrade.recording`` metadata record, so a flooding node cannot fill the disk.
@@ -65,7 +68,7 @@ class Recorder:
         self._writer: Writer | None = None
         self._closed = False
         self._schemas: dict[str, int] = {}
-        self._channels: dict[tuple[str, str], _Channel] = {}
+        self._channels: dict[tuple[str, str, str | None], _Channel] = {}
         self.message_count = 0
         self.payload_bytes = 0
         self.dropped = 0
@@ -106,11 +109,14 @@ class Recorder:
         t_ns: int,
         callerid: str,
         latching: bool = False,
+        origin: str | None = None,
     ) -> bool:
         """Record one message at sim time ``t_ns``; False when the size cap dropped it.
 
         The payload is not re-validated here: the grader decodes untrusted bytes once, on receipt.
-        A channel keeps the latching flag of its first message.
+        A channel keeps the latching flag of its first message. ``origin`` (one of ORIGINS; the grader always
+        gives it) keeps what the world and the grader published in channels of their own, whatever name a node
+        gave itself; a reader of a file with origins trusts only "world" channels for odometry and ground truth.
         """
         writer = self._open_writer()
         if not isinstance(t_ns, int) or t_ns < 0:
@@ -120,9 +126,12 @@ class Recorder:
         if self._max_bytes is not None and self.payload_bytes + len(payload) > self._max_bytes:
             self.dropped += 1
             return False
-        channel = self._channels.get((topic, callerid))
+        if origin is not None and origin not in ORIGINS:
+            raise RecordingError(f"origin {origin!r} is not one of {', '.join(ORIGINS)}")
+        key = (topic, callerid, origin)
+        channel = self._channels.get(key)
         if channel is None:
-            channel = self._channels[(topic, callerid)] = self._register(writer, topic, type_name, callerid, latching)
+            channel = self._channels[key] = self._register(writer, topic, type_name, callerid, latching, origin)
         elif channel.type_name != type_name and ros1_type_name(type_name) != channel.type_name:
             raise RecordingError(f"{callerid} wrote {type_name} on {topic}, which it recorded as {channel.type_name}")
         channel.sequence += 1
@@ -133,7 +142,8 @@ class Recorder:
         self.payload_bytes += len(payload)
         return True
 
-    def _register(self, writer: Writer, topic: str, type_name: str, callerid: str, latching: bool) -> _Channel:
+    def _register(self, writer: Writer, topic: str, type_name: str, callerid: str, latching: bool,
+                  origin: str | None) -> _Channel:
         if not topic.startswith("/"):
             raise RecordingError(f"topic {topic!r} is not a global name")
         name = ros1_type_name(type_name)
@@ -143,16 +153,12 @@ class Recorder:
             schema_id = self._schemas[name] = writer.register_schema(
                 name=name, encoding="ros1msg", data=definition.encode()
             )
-        channel_id = writer.register_channel(
-            topic=topic,
-            message_encoding="ros1",
-            schema_id=schema_id,
-            metadata={
-                "callerid": callerid,
-                "md5sum": self._catalog.md5sum(name),
-                "latching": "true" if latching else "false",
-            },
-        )
+        metadata = {"callerid": callerid, "md5sum": self._catalog.md5sum(name),
+                    "latching": "1" if latching else "0"}  # the ROS 1 connection-header value, as bags keep it
+        if origin is not None:
+            metadata["origin"] = origin
+        channel_id = writer.register_channel(topic=topic, message_encoding="ros1", schema_id=schema_id,
+                                             metadata=metadata)
         return _Channel(channel_id, name)
 
     def add_metadata(self, name: str, values: Mapping[str, object]) -> None:

@@ -4,7 +4,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from grader import timing
 from grader.report import SubmissionReport
+from grader.reports.advice import with_advice
 from grader.reports.files import write_atomic
 from grader.reports.html import render_html
 from grader.reports.markdown import render_markdown
@@ -18,6 +20,7 @@ class ReportFiles:
     """What was written, and the plots and notes the platform outputs reuse."""
 
     folder: Path
+    report: SubmissionReport  # the report as written: with the advice read from its recordings
     json: Path
     markdown: Path
     html: Path
@@ -27,7 +30,15 @@ class ReportFiles:
 
 def write_report_folder(report: SubmissionReport, folder: Path, with_plots: bool = True) -> ReportFiles:
     """Write the report files into folder; report.json goes last, so its presence means the folder is complete."""
-    plots, notes = report_plots(report) if with_plots else ([], [])
+    with timing.stage("advice"):
+        report = with_advice(report) if with_plots else report
+    with timing.stage("plots"):
+        plots, notes = report_plots(report) if with_plots else ([], [])
+    with timing.stage("report files"):
+        return _write(report, folder, plots, notes)
+
+
+def _write(report: SubmissionReport, folder: Path, plots: list[Plot], notes: list[str]) -> ReportFiles:
     for plot in plots:
         write_atomic(folder / PLOTS_DIR / plot.filename, plot.png)
     markdown = write_atomic(
@@ -35,4 +46,4 @@ def write_report_folder(report: SubmissionReport, folder: Path, with_plots: bool
     )
     html = write_atomic(folder / "report.html", render_html(report, plots, notes))
     json_path = write_atomic(folder / "report.json", report.model_dump_json(indent=2))
-    return ReportFiles(folder, json_path, markdown, html, plots, notes)
+    return ReportFiles(folder, report, json_path, markdown, html, plots, notes)

@@ -3,11 +3,12 @@ from __future__ import annotations
 
 import base64
 from collections.abc import Sequence
-from html import escape
 
 from grader.report import SubmissionReport, TaskReport
+from grader.reports.cause import criterion_feedback, criterion_measured, lead_lines, noticed
+from grader.reports.escape import html_text as escape
 from grader.reports.plots import Plot
-from grader.reports.text import fmt_points, foxglove_help, measured_text, percent, task_status_text
+from grader.reports.text import NOTICED_HEADING, fmt_points, foxglove_help, percent
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:60rem;margin:2rem auto;padding:0 1rem;color:#222}
@@ -26,22 +27,20 @@ def data_uri(png: bytes) -> str:
 
 def _task_html(task: TaskReport, plots: Sequence[Plot]) -> list[str]:
     parts = [f"<h2>{escape(task.title or task.id)} <code>{escape(task.id)}</code>: {fmt_points(task.score, task.max_score)}</h2>"]
-    status = task_status_text(task)
-    if status:
-        parts.append(f'<p class="warn">{escape(status)}</p>')
+    parts += [f'<p class="warn">{escape(line)}</p>' for line in lead_lines(task)]
     if task.criteria:
         parts.append("<table><tr><th></th><th>Criterion</th><th>Points</th><th>Measured</th><th>Feedback</th></tr>")
         for c in task.criteria:
             css, sign = ("pass", "✔") if c.passed else ("fail", "✘")
             parts.append(
                 f'<tr><td class="{css}">{sign}</td><td>{escape(c.title or c.id)}</td>'
-                f"<td>{fmt_points(c.score, c.max_score)}</td><td>{escape(measured_text(c.measured))}</td>"
-                f"<td>{escape(c.feedback)}</td></tr>"
+                f"<td>{fmt_points(c.score, c.max_score)}</td><td>{escape(criterion_measured(task, c))}</td>"
+                f"<td>{escape(criterion_feedback(task, c))}</td></tr>"
             )
         parts.append("</table>")
     if task.diagnostics:
-        parts.append("<p>What rosgrade noticed while running your node:</p><ul>")
-        parts += [f"<li>{escape(d)}</li>" for d in task.diagnostics]
+        parts.append(f"<p>{NOTICED_HEADING}:</p><ul>")
+        parts += [f"<li>{escape(d)}</li>" for d in noticed(task)]
         parts.append("</ul>")
     for plot in (p for p in plots if p.task == task.id):
         parts.append(
@@ -65,7 +64,7 @@ def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Seq
         "<table><tr><th>Task</th><th>Status</th><th>Points</th></tr>",
     ]
     parts += [
-        f"<tr><td>{escape(t.title or t.id)}</td><td>{t.status}</td><td>{fmt_points(t.score, t.max_score)}</td></tr>"
+        f"<tr><td>{escape(t.title or t.id)}</td><td>{escape(t.status)}</td><td>{fmt_points(t.score, t.max_score)}</td></tr>"
         for t in report.tasks
     ]
     parts.append("</table>")

@@ -4,15 +4,24 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from grader.report import CriterionResult, SubmissionReport, TaskReport
+from grader.reports.cause import criterion_feedback, criterion_measured, lead_lines, noticed
+from grader.reports.escape import markdown, markdown_cell, one_line
+from grader.reports.measured import describe
 from grader.reports.plots import Plot
-from grader.reports.text import fmt_points, foxglove_help, is_public, measured_text, percent, task_status_text
+from grader.reports.text import NOTICED_HEADING, fmt_points, foxglove_help, is_public, percent
 
 HIDDEN_TEXT = "(details shown later)"
 
 
-def cell(text: str) -> str:
-    """Text made safe for one Markdown table cell."""
-    return text.replace("\\", "\\\\").replace("|", "\\|").replace("\r", "").replace("\n", "<br>")
+def code(text: str) -> str:
+    """Text as inline code whatever backticks it holds (the fence is longer than any run of them inside)."""
+    text = one_line(text)
+    run, fence = 0, 1
+    for char in text:
+        run = run + 1 if char == "`" else 0
+        fence = max(fence, run + 1)
+    ticks = "`" * fence
+    return f"{ticks} {text} {ticks}" if text.startswith("`") or text.endswith("`") else f"{ticks}{text}{ticks}"
 
 
 def mark(criterion: CriterionResult) -> str:
@@ -26,16 +35,20 @@ def criterion_markdown(criterion: CriterionResult, public_only: bool = False) ->
         return f"{mark(criterion)} {fmt_points(criterion.score, criterion.max_score)} points. {HIDDEN_TEXT}"
     lines = [f"{mark(criterion)} **{fmt_points(criterion.score, criterion.max_score)} points**"]
     if criterion.feedback:
-        lines.append("")
-        lines.append(criterion.feedback)
-    measured = measured_text(criterion.measured)
+        lines += ["", markdown(criterion.feedback)]
+    measured = describe(criterion.measured)
     if measured:
-        lines.append("")
-        lines.append(f"Measured: {measured}")
+        lines += ["", f"Measured: {markdown(measured, line_start=False)}"]
     if criterion.scenario:
-        lines.append("")
-        lines.append(f"Scenario: `{criterion.scenario}`")
+        lines += ["", f"Scenario: {markdown(criterion.scenario, line_start=False)}"]
     return "\n".join(lines)
+
+
+def noticed_markdown(notes: Sequence[str], heading: str = NOTICED_HEADING) -> list[str]:
+    """The notes rosgrade made while running the node, as a Markdown list under a heading (none: no lines)."""
+    if not notes:
+        return []
+    return [f"{heading}:", ""] + [f"- {markdown_cell(n)}" for n in notes]
 
 
 def task_table(task: TaskReport, public_only: bool = False) -> list[str]:
@@ -45,11 +58,11 @@ def task_table(task: TaskReport, public_only: bool = False) -> list[str]:
     lines = ["| | Criterion | Points | Measured | Feedback |", "|---|---|---|---|---|"]
     for criterion in task.criteria:
         hidden = public_only and not is_public(criterion)
-        measured = "" if hidden else measured_text(criterion.measured)
-        feedback = HIDDEN_TEXT if hidden else criterion.feedback
+        measured = "" if hidden else criterion_measured(task, criterion)
+        feedback = HIDDEN_TEXT if hidden else criterion_feedback(task, criterion)
         lines.append(
-            f"| {mark(criterion)} | {cell(criterion.title or criterion.id)} "
-            f"| {fmt_points(criterion.score, criterion.max_score)} | {cell(measured)} | {cell(feedback)} |"
+            f"| {mark(criterion)} | {markdown_cell(criterion.title or criterion.id)} "
+            f"| {fmt_points(criterion.score, criterion.max_score)} | {markdown_cell(measured)} | {markdown_cell(feedback)} |"
         )
     return lines
 
@@ -65,31 +78,31 @@ def render_markdown(
     """The whole report as Markdown; images are linked through image_src (omitted when None)."""
     h = "#" * heading_level
     lines = [
-        f"{h} rosgrade report: {report.submission}",
+        f"{h} rosgrade report: {markdown(report.submission, line_start=False)}",
         "",
-        f"**Score: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)** · rosgrade {report.rosgrade_version}",
+        f"**Score: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)** · "
+        f"rosgrade {markdown(report.rosgrade_version, line_start=False)}"
+        + (f" · nodes isolated by {markdown(report.isolation, line_start=False)}" if report.isolation else ""),
         "",
         "| Task | Status | Points |",
         "|---|---|---|",
     ]
-    lines += [f"| {cell(t.title or t.id)} | {t.status} | {fmt_points(t.score, t.max_score)} |" for t in report.tasks]
+    lines += [f"| {markdown_cell(t.title or t.id)} | {markdown_cell(t.status)} | {fmt_points(t.score, t.max_score)} |"
+              for t in report.tasks]
     for task in report.tasks:
-        lines += ["", f"{h}# {task.title or task.id} (`{task.id}`): {fmt_points(task.score, task.max_score)}", ""]
-        status = task_status_text(task)
-        if status:
-            lines += [f"> ⚠️ {status}", ""]
+        lines += ["", f"{h}# {markdown(task.title or task.id, line_start=False)} ({code(task.id)}): {fmt_points(task.score, task.max_score)}", ""]
+        lines += [line for lead in lead_lines(task) for line in (f"> ⚠️ {markdown_cell(lead)}", "")]
         lines += task_table(task, public_only)
         if task.diagnostics:
-            lines += ["", "What rosgrade noticed while running your node:", ""]
-            lines += [f"- {d}" for d in task.diagnostics]
+            lines += [""] + noticed_markdown(noticed(task))
         if image_src is not None:
             for plot in (p for p in plots if p.task == task.id):
-                lines += ["", f"![{plot.title}]({image_src(plot)})"]
+                lines += ["", f"![{markdown(plot.title, line_start=False)}]({image_src(plot)})"]
         if task.recordings:
-            lines += ["", "Recordings: " + ", ".join(f"`{r}`" for r in task.recordings)]
+            lines += ["", "Recordings: " + ", ".join(code(r) for r in task.recordings)]
     if notes:
-        lines += ["", "Notes:", ""] + [f"- {n}" for n in notes]
+        lines += ["", "Notes:", ""] + [f"- {markdown_cell(n)}" for n in notes]
     recordings = [r for t in report.tasks for r in t.recordings]
     if recordings:
-        lines += ["", f"{h}# Looking at a recording", ""] + [f"- {line}" for line in foxglove_help(recordings[0])]
+        lines += ["", f"{h}# Looking at a recording", ""] + [f"- {markdown(line)}" for line in foxglove_help(recordings[0])]
     return "\n".join(lines) + "\n"

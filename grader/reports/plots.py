@@ -77,13 +77,14 @@ def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = 90) -> li
     truth = recording.ground_truth()
     odom = recording.odometry()
     path = truth if truth is not None and len(truth.t) else odom
+    metadata = recording.metadata or {}
+    stop_s = shutdown_s(metadata)
     if path is not None and len(path.t):
-        figure = _path_figure(path, kind, has_truth=path is truth)
+        figure = _path_figure(path, kind, has_truth=path is truth, stop_s=stop_s)
         plots.append(Plot(task_id, scenario, "path", f"{task_id} ({scenario}): driven path", _png(figure, dpi)))
     commands = recording.commands()
     if commands is not None and len(commands.t):
-        metadata = recording.metadata or {}
-        figure = _command_figure(commands, _limits(metadata), _shutdown_s(metadata))
+        figure = _command_figure(commands, _limits(metadata), stop_s, path if path is not None and len(path.t) else None)
         plots.append(Plot(task_id, scenario, "commands", f"{task_id} ({scenario}): velocity commands", _png(figure, dpi)))
     if kind == "printed" and odom is not None and len(odom.t):
         printed = printed_positions(recording.output_lines())
@@ -134,12 +135,13 @@ def _ideal_outline(kind: str | None, path: Any) -> tuple[np.ndarray, np.ndarray,
     sign = _turn_sign(np.asarray(path.yaw))
     heading = np.array([np.cos(yaw0), np.sin(yaw0)])
     left = sign * np.array([-np.sin(yaw0), np.cos(yaw0)])
-    if kind == "circle":
-        centre = fit_circle_centre(np.asarray(path.x), np.asarray(path.y))
-        label = "ideal circle (r = 0.5 m) around the fitted centre"
-        if centre is None:
-            centre = tuple(np.array([x0, y0]) + IDEAL_RADIUS_M * left)
-            label = "ideal circle (r = 0.5 m) from the start pose"
+    if kind == "circle":  # through the start, tangent to the start heading, on the side the robot turned to
+        fitted = fit_circle_centre(np.asarray(path.x), np.asarray(path.y))
+        if fitted is not None:  # the side of the heading the driven circle's centre is on
+            cross = heading[0] * (fitted[1] - y0) - heading[1] * (fitted[0] - x0)
+            left = (1.0 if cross >= 0 else -1.0) * np.array([-np.sin(yaw0), np.cos(yaw0)])
+        centre = tuple(np.array([x0, y0]) + IDEAL_RADIUS_M * left)
+        label = "ideal circle (r = 0.5 m) from the start pose"
         angles = np.linspace(0, 2 * np.pi, 200)
         return centre[0] + IDEAL_RADIUS_M * np.cos(angles), centre[1] + IDEAL_RADIUS_M * np.sin(angles), label
     if kind == "square":
@@ -150,11 +152,17 @@ def _ideal_outline(kind: str | None, path: Any) -> tuple[np.ndarray, np.ndarray,
     return None
 
 
-def _path_figure(path: Any, kind: str | None, has_truth: bool) -> Figure:
+def _path_figure(path: Any, kind: str | None, has_truth: bool, stop_s: float | None = None) -> Figure:
+    """The whole recorded path; what the robot did after Ctrl+C in another colour, from a marked Ctrl+C point."""
     figure = Figure(figsize=(5.2, 5.0))
     axes = figure.add_subplot()
     source = "true path (simulator)" if has_truth else "path from /odom"
-    axes.plot(path.x, path.y, color="tab:blue", lw=1.8, label=source)
+    t = np.asarray(path.t)
+    cut = len(t) if stop_s is None else int(np.searchsorted(t, stop_s, side="right"))
+    axes.plot(path.x[:max(cut, 1)], path.y[:max(cut, 1)], color="tab:blue", lw=1.8, label=source)
+    if 0 < cut < len(t):
+        axes.plot(path.x[cut - 1:], path.y[cut - 1:], color="tab:orange", lw=1.8, label="after Ctrl+C")
+        axes.plot(path.x[cut - 1], path.y[cut - 1], "X", color="tab:purple", ms=9, label="Ctrl+C")
     outline = _ideal_outline(kind, path)
     if outline is not None:  # drawn over the path so it stays visible where the two coincide
         axes.plot(outline[0], outline[1], "--", color="tab:green", lw=1.5, label=outline[2])
@@ -169,21 +177,26 @@ def _path_figure(path: Any, kind: str | None, has_truth: bool) -> Figure:
     return figure
 
 
-def _command_figure(commands: Any, limits: tuple[float, float] | None, shutdown_s: float | None) -> Figure:
+def _command_figure(commands: Any, limits: tuple[float, float] | None, stop_s: float | None,
+                    path: Any = None) -> Figure:
+    """Commands against the limits and, over the whole recording, the speed the robot really had (so a robot that
+    keeps moving after Ctrl+C, when commands have stopped, shows)."""
     figure = Figure(figsize=(7.0, 4.2))
     linear_axes, angular_axes = figure.subplots(2, 1, sharex=True)
     series = (
-        (linear_axes, np.asarray(commands.linear)[:, 0], "linear.x [m/s]", 0),
-        (angular_axes, np.asarray(commands.angular)[:, 2], "angular.z [rad/s]", 1),
+        (linear_axes, np.asarray(commands.linear)[:, 0], "linear.x [m/s]", 0, None if path is None else path.vx),
+        (angular_axes, np.asarray(commands.angular)[:, 2], "angular.z [rad/s]", 1, None if path is None else path.wz),
     )
-    for axes, values, label, limit_index in series:
+    for axes, values, label, limit_index, actual in series:
+        if actual is not None:
+            axes.plot(path.t, actual, color="tab:gray", lw=1.0, label="robot's actual speed")
         axes.step(commands.t, values, where="post", color="tab:blue", lw=1.5, label="commanded")
         if limits is not None:
             limit = limits[limit_index]
             axes.axhline(limit, color="tab:red", ls="--", lw=1, label=f"limit ±{limit:g}")
             axes.axhline(-limit, color="tab:red", ls="--", lw=1)
-        if shutdown_s is not None:
-            axes.axvline(shutdown_s, color="tab:purple", ls=":", lw=1.5, label="Ctrl+C (shutdown)")
+        if stop_s is not None:
+            axes.axvline(stop_s, color="tab:purple", ls=":", lw=1.5, label="Ctrl+C (shutdown)")
         axes.set_ylabel(label)
         axes.grid(True, alpha=0.3)
     linear_axes.legend(loc="best", fontsize=8)
@@ -222,7 +235,7 @@ def _limits(metadata: dict[str, Any]) -> tuple[float, float] | None:
     return ROBOT_LIMITS.get(str(_record(metadata, "rosgrade").get("robot", "")))
 
 
-def _shutdown_s(metadata: dict[str, Any]) -> float | None:
+def shutdown_s(metadata: dict[str, Any]) -> float | None:
     value = _record(metadata, "rosgrade.run").get("shutdown_requested_s")
     try:
         return None if value in (None, "", "null") else float(json.loads(value) if isinstance(value, str) else value)

@@ -1,40 +1,52 @@
-"""The console view of a report (rich): one row per criterion, readable in an 80-column terminal."""
+"""The console view of a report (rich): per task, one block per criterion that stays readable in 80 columns."""
 from __future__ import annotations
 
-from rich.console import Console
+from rich.console import Console, Group
+from rich.padding import Padding
 from rich.table import Table
 from rich.text import Text
 
-from grader.report import SubmissionReport
-from grader.reports.text import fmt_points, measured_text, percent, task_status_text
+from grader.report import CriterionResult, SubmissionReport, TaskReport
+from grader.reports.cause import criterion_feedback, criterion_measured, lead_lines, noticed
+from grader.reports.escape import one_line, plain
+from grader.reports.text import NOTICED_HEADING, fmt_points, percent
+
+INDENT = 2
+
+
+def _indented(text: str, style: str = "") -> Padding:
+    """Wrapped text indented under its criterion, so every wrapped line keeps the indent."""
+    return Padding(Text(plain(text), style=style), (0, 0, 0, INDENT))
+
+
+def _criterion_cell(task: TaskReport, criterion: CriterionResult) -> Group:
+    style, mark = ("green", "✔") if criterion.passed else ("red", "✘")
+    parts: list[Text | Padding] = [Text(f"{mark} {one_line(criterion.title or criterion.id)}", style=style)]
+    measured = criterion_measured(task, criterion)
+    if measured:
+        parts.append(_indented(measured, "dim"))
+    feedback = criterion_feedback(task, criterion)
+    if feedback:
+        parts.append(_indented(feedback.splitlines()[0]))
+    return Group(*parts)
 
 
 def report_table(report: SubmissionReport) -> Table:
-    """Task, criterion, points, measured values and one line of feedback per row."""
-    table = Table(title=Text(f"rosgrade: {report.submission}"), show_lines=False, expand=False)
-    table.add_column("Task", style="bold", no_wrap=True)
-    table.add_column("Criterion")
+    """One row per criterion (title, measured values, one line of feedback) with its points on the right."""
+    table = Table(title=Text(f"rosgrade: {one_line(report.submission)}"), expand=False, show_lines=False)
+    table.add_column("Task / criterion", ratio=1)
     table.add_column("Points", justify="right", no_wrap=True)
-    table.add_column("Measured")
-    table.add_column("Feedback")
     for task in report.tasks:
-        task_cell = f"{task.id}\n{fmt_points(task.score, task.max_score)}"
-        status = task_status_text(task)
-        if status or not task.criteria:
-            table.add_row(Text(task_cell), Text(task.status, style="yellow"), "", "", Text(status))
-            task_cell = ""
+        table.add_row(Text(f"{one_line(task.title or task.id)} ({task.id})", style="bold"),
+                      Text(fmt_points(task.score, task.max_score), style="bold"))
+        for line in lead_lines(task):
+            table.add_row(Text(plain(line), style="yellow"), "")
         for criterion in task.criteria:
-            style = "green" if criterion.passed else "red"
-            mark = "✔" if criterion.passed else "✘"
-            # Text, not markup: student and rubric text may contain brackets such as "[m]".
-            table.add_row(
-                Text(task_cell),
-                Text(f"{mark} {criterion.title or criterion.id}", style=style),
-                fmt_points(criterion.score, criterion.max_score),
-                Text(measured_text(criterion.measured, limit=1)),
-                Text(criterion.feedback.splitlines()[0] if criterion.feedback else ""),
-            )
-            task_cell = ""
+            table.add_row(_criterion_cell(task, criterion), fmt_points(criterion.score, criterion.max_score))
+        notes = noticed(task)
+        if notes:
+            table.add_row(Group(Text(f"{NOTICED_HEADING}:", style="italic"),
+                                *(_indented(f"• {one_line(n)}") for n in notes)), "")
         table.add_section()
     return table
 
@@ -42,6 +54,7 @@ def report_table(report: SubmissionReport) -> Table:
 def print_report(console: Console, report: SubmissionReport) -> None:
     """Print the table and the total."""
     console.print(report_table(report))
-    console.print(
-        f"[bold]Total: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)[/bold]", highlight=False
-    )
+    console.print(Text(f"Total: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)", style="bold"))
+    if report.isolation:
+        console.print(Text(f"Nodes isolated by {report.isolation}.",
+                           style="yellow" if "rlimits" in report.isolation else "dim"))

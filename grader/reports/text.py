@@ -3,9 +3,10 @@ from __future__ import annotations
 
 from grader.report import CriterionResult, SubmissionReport, TaskReport
 
-EXPECTED_PREFIX = "expected_"
 # Measured names end in their unit (radius_m, max_linear_mps); shown as "radius 0.497 m".
 UNIT_SUFFIXES = {"_mps": "m/s", "_radps": "rad/s", "_deg": "°", "_rad": "rad", "_hz": "Hz", "_pct": "%", "_m": "m", "_s": "s"}
+
+NOTICED_HEADING = "What rosgrade noticed while running your node"
 
 _STATUS_TEXT = {
     "error": "Your node stopped with an error, so this task could not be fully graded.",
@@ -29,27 +30,18 @@ def fmt_number(value: float | int | str | bool | None) -> str:
     return str(value)
 
 
+def fmt_score(value: float) -> str:
+    """Points rounded for people: one decimal (15.297 → 15.3), two when one would hide a small amount (0.04)."""
+    for digits in (1, 2):
+        text = f"{value:.{digits}f}"
+        if float(text) != 0 or value == 0:
+            break
+    return text.rstrip("0").rstrip(".") if "." in text else text
+
+
 def fmt_points(score: float, max_score: float) -> str:
-    """Points as 'score / max'."""
-    return f"{fmt_number(float(score))} / {fmt_number(float(max_score))}"
-
-
-def measured_text(measured: dict[str, float | int | str | bool | None], limit: int | None = None) -> str:
-    """Measured values, each paired with its `expected_<name>` entry when the rubric gave one.
-
-    Scoring puts the criterion's own quantity first, so ``limit=1`` gives the one number a console row needs.
-    """
-    parts = []
-    for name, value in measured.items():
-        if name.startswith(EXPECTED_PREFIX) and name[len(EXPECTED_PREFIX):] in measured:
-            continue
-        label, unit = split_unit(name)
-        text = f"{label} {fmt_number(value)}{unit}"
-        expected = measured.get(EXPECTED_PREFIX + name)
-        if expected is not None:
-            text += f" (expected {fmt_number(expected)}{unit})"
-        parts.append(text)
-    return ", ".join(parts[:limit])
+    """Points as 'score / max', rounded for people."""
+    return f"{fmt_score(float(score))} / {fmt_score(float(max_score))}"
 
 
 def split_unit(name: str) -> tuple[str, str]:

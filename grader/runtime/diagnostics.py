@@ -4,9 +4,11 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from grader.runtime.session import Session
+    from grader.runtime.session import Session, _Node
 
 _CONNECT_MS = 50
+# Per node, at most this many lines about single publishers or subscribers; the rest are summarised in one line.
+MAX_ENDPOINT_LINES = 20
 
 
 def _count(n: int, what: str) -> str:
@@ -22,13 +24,18 @@ def _location(exc: dict) -> str:
     return where + (f" (`{last['text']}`)" if last.get("text") else "")
 
 
+def _capped(lines: list[str], what: str) -> list[str]:
+    """The first MAX_ENDPOINT_LINES lines, then one line saying how many more there were."""
+    if len(lines) <= MAX_ENDPOINT_LINES:
+        return lines
+    return lines[:MAX_ENDPOINT_LINES] + [f"... and {len(lines) - MAX_ENDPOINT_LINES} more {what} (not listed)."]
+
+
 def diagnose(session: Session) -> list[str]:
     """Findings for every node of a finished session, most useful first."""
     world = session.world
     command_topics = tuple(world.command_topics)
-    world_topics = {world.mode.odometry.topic: "nav_msgs/Odometry"}
-    if world.mode.tf is not None:
-        world_topics["/tf"] = "tf2_msgs/TFMessage"
+    world_topics = {p.topic: p.type for p in world.publications if p.to_nodes}
     robot_received = sum(session.received.values())
     notes: list[str] = []
     for node in session.nodes:
@@ -37,30 +44,8 @@ def diagnose(session: Session) -> list[str]:
         if state.name is None:
             notes.append(f"{label} never called rospy.init_node(): a ROS node must call it before it can publish, "
                          "subscribe or read the time.")
-        for pub in state.publishers.values():
-            if pub.topic in command_topics and pub.type != "geometry_msgs/Twist":
-                notes.append(f"{pub.topic} carries geometry_msgs/Twist, but {label} published {pub.type} there: "
-                             "the robot ignores it.")
-            elif (pub.type == "geometry_msgs/Twist" and pub.topic not in command_topics and pub.count
-                  and robot_received == 0):
-                notes.append(f"Your node published {_count(pub.count, 'message')} on {pub.topic}; this robot "
-                             f"listens on {' or '.join(command_topics)}.")
-            # Only worth saying when it cost the student something: a loop that publishes on loses nothing that matters.
-            if pub.dropped_before_connect and pub.count - pub.dropped_before_connect < 3:
-                notes.append(
-                    f"{_count(pub.dropped_before_connect, 'message')} on {pub.topic} went out in the first "
-                    f"{_CONNECT_MS} ms after the publisher was created, before the robot had connected, and were "
-                    "lost (as on a real ROS system). Wait briefly after creating a publisher, or publish in a loop.")
-        for sub in state.subscribers.values():
-            expected = world_topics.get(sub.topic)
-            if expected is not None and expected != sub.type:
-                notes.append(f"{label} subscribed to {sub.topic} as {sub.type}, but it carries {expected}: "
-                             "no messages can arrive.")
-            elif expected is None and not any(sub.topic == p.topic for n in session.nodes
-                                               for p in n.link.state.publishers.values()):
-                available = ", ".join(sorted(world_topics))
-                notes.append(f"{label} subscribed to {sub.topic}, which nothing publishes here (the robot publishes "
-                             f"{available}).")
+        notes += _capped(_endpoint_notes(session, node, command_topics, world_topics, robot_received),
+                         f"findings about {label}'s publishers and subscribers")
         if state.exception:
             exc = state.exception
             notes.append(f"{label} stopped with an uncaught {exc.get('type')}{_location(exc)}: {exc.get('message')}")
@@ -75,14 +60,46 @@ def diagnose(session: Session) -> list[str]:
     return notes
 
 
+def _endpoint_notes(session: Session, node: _Node, command_topics: tuple[str, ...], world_topics: dict[str, str],
+                    robot_received: int) -> list[str]:
+    """Findings about one node's publishers and subscribers: wrong types or topics, messages lost at the start."""
+    state, label = node.link.state, node.outcome.script
+    notes: list[str] = []
+    for pub in state.publishers.values():
+        if pub.topic in command_topics and pub.type != "geometry_msgs/Twist":
+            notes.append(f"{pub.topic} carries geometry_msgs/Twist, but {label} published {pub.type} there: "
+                         "the robot ignores it.")
+        elif (pub.type == "geometry_msgs/Twist" and pub.topic not in command_topics and pub.count
+              and robot_received == 0):
+            notes.append(f"Your node published {_count(pub.count, 'message')} on {pub.topic}; this robot "
+                         f"listens on {' or '.join(command_topics)}.")
+        # Only worth saying when it cost the student something: a loop that publishes on loses nothing that matters.
+        if pub.dropped_before_connect and pub.count - pub.dropped_before_connect < 3:
+            notes.append(
+                f"{_count(pub.dropped_before_connect, 'message')} on {pub.topic} went out in the first "
+                f"{_CONNECT_MS} ms after the publisher was created, before the robot had connected, and were "
+                "lost (as on a real ROS system). Wait briefly after creating a publisher, or publish in a loop.")
+    for sub in state.subscribers.values():
+        expected = world_topics.get(sub.topic)
+        if expected is not None and expected != sub.type:
+            notes.append(f"{label} subscribed to {sub.topic} as {sub.type}, but it carries {expected}: "
+                         "no messages can arrive.")
+        elif expected is None and not any(sub.topic == p.topic for n in session.nodes
+                                           for p in n.link.state.publishers.values()):
+            available = ", ".join(sorted(world_topics))
+            notes.append(f"{label} subscribed to {sub.topic}, which nothing publishes here (the robot publishes "
+                         f"{available}).")
+    return notes
+
+
 def topic_summary(session: Session) -> list[str]:
     """What each node published and received, with counts (the same kind of line for every run)."""
     lines = []
     for node in session.nodes:
         label = node.outcome.script
         state = node.link.state
-        lines += [f"{label} published {_count(p.count, 'message')} on {p.topic} ({p.type})."
-                  for p in state.publishers.values()]
-        lines += [f"{label} received {_count(s.count, 'message')} on {s.topic} ({s.type})."
-                  for s in state.subscribers.values()]
+        lines += _capped([f"{label} published {_count(p.count, 'message')} on {p.topic} ({p.type})."
+                          for p in state.publishers.values()]
+                         + [f"{label} received {_count(s.count, 'message')} on {s.topic} ({s.type})."
+                            for s in state.subscribers.values()], f"publishers and subscribers of {label}")
     return lines

@@ -5,14 +5,17 @@ must decode exactly as the declared type before anything is recorded or reaches 
 """
 from __future__ import annotations
 
+import os
 import select
 import time
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from grader import timing
 from grader.nodelib import rosgrade_channel as ch
 from grader.recording import MessageCatalog, RecordingError
+from grader.runtime import frames
 
 
 class ProtocolViolation(Exception):
@@ -41,6 +44,18 @@ class Endpoint:
     count: int = 0
     closed: bool = False
     dropped_before_connect: int = 0
+    latched: Latched | None = None  # a latched publisher's last message
+
+
+@dataclass
+class Latched:
+    """The last message of a latched publisher: when it was published, whether it has gone out on its topic (it
+    waits for the publisher to connect), and who has received it."""
+
+    data: bytes
+    t_ns: int
+    sent: bool
+    receivers: set = field(default_factory=set)
 
 
 @dataclass
@@ -82,42 +97,62 @@ class NodeState:
 
 
 _LOG_LEVELS = {1, 2, 4, 8, 16}
+# A node needs a handful of publishers and subscribers; past this many it is flooding the grader's memory and reports.
+MAX_ENDPOINTS = 1000
+# Bytes the grader holds for a node that is slow to read its batches; a node never legitimately needs more.
+MAX_PENDING_BYTES = 32 * 1024 * 1024
 
 
-def _field(obj: dict, key: str, kind: type | tuple[type, ...], optional: bool = False):
-    value = obj.get(key)
-    if value is None and optional:
-        return None
-    if not isinstance(value, kind) or isinstance(value, bool) and kind is int:
-        raise ProtocolViolation(f"frame field {key!r} is missing or not {getattr(kind, '__name__', kind)}")
-    return value
+class EndpointLimitExceeded(Exception):
+    """The node registered more publishers and subscribers than MAX_ENDPOINTS; it is stopped."""
 
 
 def _topic(value: str) -> str:
-    if not value.startswith("/") or len(value) > 256 or any(c.isspace() for c in value):
+    if not value.startswith("/") or any(c.isspace() for c in value):
         raise ProtocolViolation(f"invalid topic name {value[:80]!r}")
     return value
 
 
 class NodeLink:
-    """One node's channel, seen from the grader."""
+    """One node's channel, seen from the grader. Reads wait and writes never block, both under one wall-clock
+    watchdog: a node that neither yields nor reads is stopped, the grader goes on."""
 
     def __init__(self, read_fd: int, write_fd: int, catalog: MessageCatalog, silent_wall_s: float,
-                 output_cap: int) -> None:
+                 output_cap: int, reserved_names: frozenset[str] = frozenset()) -> None:
         self._reader = ch.FrameReader(read_fd, ch.NODE_KINDS, before_read=self._wait_readable)
         self._write_fd = write_fd
+        os.set_blocking(write_fd, False)
+        self._pending = bytearray()  # bytes for the node that its pipe has not taken yet
         self._catalog = catalog
         self._silent_wall_s = silent_wall_s
         self._output_cap = output_cap
+        self._reserved = reserved_names
         self._deadline = 0.0
         self._partial = {1: bytearray(), 2: bytearray()}
         self.state = NodeState()
 
     # -- reading -----------------------------------------------------------------------------------------------
     def _wait_readable(self) -> None:
-        remaining = self._deadline - time.monotonic()
-        if remaining <= 0 or not select.select([self._reader.fd], [], [], remaining)[0]:
-            raise NodeSilent(f"did not yield to the grader for {self._silent_wall_s:g} s of wall time")
+        """Wait until the node has something to read, writing what it still has to receive meanwhile."""
+        started = time.perf_counter()
+        try:
+            self._select_until_readable()
+        finally:
+            timing.add("waiting for nodes", time.perf_counter() - started)
+
+    def _select_until_readable(self) -> None:
+        while True:
+            remaining = self._deadline - time.monotonic()
+            writing = [self._write_fd] if self._pending else []
+            readable, writable, _ = select.select([self._reader.fd], writing, [], max(remaining, 0))
+            if writable:
+                self._flush()
+            if readable:
+                return
+            if not writable:
+                if self._pending:
+                    raise NodeSilent(f"did not read the grader's messages for {self._silent_wall_s:g} s of wall time")
+                raise NodeSilent(f"did not yield to the grader for {self._silent_wall_s:g} s of wall time")
 
     def _read(self) -> tuple[int, bytes]:
         try:
@@ -133,11 +168,11 @@ class NodeLink:
         kind, payload = self._read()
         if kind != ch.HELLO:
             raise ProtocolViolation(f"expected HELLO first, got {ch.KIND_NAMES.get(kind, kind)}")
-        hello = self._json(payload)
-        if hello.get("protocol") != ch.PROTOCOL:
-            raise ProtocolViolation(f"protocol {hello.get('protocol')!r} is not {ch.PROTOCOL}")
+        hello = self._parse(kind, payload)
+        if hello.protocol != ch.PROTOCOL:
+            raise ProtocolViolation(f"protocol {hello.protocol!r} is not {ch.PROTOCOL}")
         self._send(ch.encode_json(ch.START, start))
-        return hello
+        return hello.model_dump()
 
     def run_until_wait(self, t_ns: int, sink: Callable[[object], None]) -> int | None:
         """Read frames until the node yields, passing each event at t_ns to sink; returns wake_ns or None."""
@@ -145,20 +180,23 @@ class NodeLink:
         while True:
             kind, payload = self._read()
             if kind == ch.WAIT:
-                wake = self._json(payload).get("wake_ns")
-                if wake is not None and (not isinstance(wake, int) or isinstance(wake, bool)):
-                    raise ProtocolViolation("WAIT wake_ns is not an integer")
+                wake = self._parse(kind, payload).wake_ns
                 # A wake-up in the past would let a node stall the world forever: it costs at least one quantum.
                 return max(wake, t_ns + ch.CALL_QUANTUM_NS) if wake is not None else None
-            event = self._handle(kind, payload, t_ns)
+            try:
+                event = self._handle(kind, payload, t_ns)
+            except ch.ChannelError as exc:
+                raise ProtocolViolation(f"{ch.KIND_NAMES.get(kind, kind)} frame: {exc}") from None
             for item in event if isinstance(event, list) else (event,):
                 if item is not None:
                     sink(item)
 
-    def _json(self, payload: bytes) -> dict:
+    @staticmethod
+    def _parse(kind: int, payload: bytes):
+        """The one place a frame that breaks its schema becomes the node's protocol violation."""
         try:
-            return ch.decode_json(payload)
-        except ch.ChannelError as exc:
+            return frames.parse(kind, payload)
+        except frames.FrameError as exc:
             raise ProtocolViolation(str(exc)) from None
 
     def _handle(self, kind: int, payload: bytes, t_ns: int):
@@ -177,48 +215,59 @@ class NodeLink:
         if kind == ch.OUTPUT:
             stream, text = ch.split_output(payload)
             return self._output(stream, text)
-        obj = self._json(payload)
+        frame = self._parse(kind, payload)
         if kind in (ch.ADVERTISE, ch.SUBSCRIBE):
-            type_name = _field(obj, "type", str)
-            if not self._catalog.known(type_name):
-                raise ProtocolViolation(f"unknown message type {type_name[:80]!r}")
-            if obj.get("md5sum") != self._catalog.md5sum(type_name):
-                raise ProtocolViolation(f"md5sum for {type_name} does not match its definition")
-            queue_size = obj.get("queue_size")
-            endpoint = Endpoint(
-                ident=_field(obj, "id", int), topic=_topic(_field(obj, "topic", str)), type=type_name,
-                md5sum=_field(obj, "md5sum", str), queue_size=queue_size if isinstance(queue_size, int) else None,
-                latch=bool(obj.get("latch", False)), registered_ns=t_ns)
-            (st.publishers if kind == ch.ADVERTISE else st.subscribers)[endpoint.ident] = endpoint
-            return endpoint if kind == ch.SUBSCRIBE else None
+            return self._register(kind, frame, t_ns)
         if kind == ch.UNREGISTER:
             # Closed endpoints are kept (marked) so the run's diagnostics still count what they carried.
-            ident = _field(obj, "id", int)
-            for endpoint in (st.publishers.get(ident), st.subscribers.get(ident)):
+            for endpoint in (st.publishers.get(frame.id), st.subscribers.get(frame.id)):
                 if endpoint is not None:
                     endpoint.closed = True
             return None
         if kind == ch.INIT:
-            st.name = _field(obj, "name", str)[:256]
-            st.init_ns = t_ns
-            st.disable_signals = bool(obj.get("disable_signals", False))
+            self._init(frame, t_ns)
             return None
         if kind == ch.LOG:
-            level = _field(obj, "level", int)
-            if level not in _LOG_LEVELS:
-                raise ProtocolViolation(f"log level {level} is not a rosgraph_msgs/Log level")
-            return LogLine(level, _field(obj, "msg", str), str(obj.get("name", st.name or "")),
-                           str(obj.get("file", "")), str(obj.get("function", "")), int(obj.get("line") or 0))
+            if frame.level not in _LOG_LEVELS:
+                raise ProtocolViolation(f"log level {frame.level} is not a rosgraph_msgs/Log level")
+            return LogLine(frame.level, frame.msg, frame.name or st.name or "", frame.file, frame.function,
+                           frame.line)
         if kind == ch.EXCEPTION:
-            where = str(obj.get("where", "uncaught"))[:40]
-            info = {"type": str(obj.get("type", ""))[:200], "message": str(obj.get("message", ""))[:2000],
-                    "frames": [f for f in obj.get("frames", [])[:50] if isinstance(f, dict)], "where": where}
-            if where == "uncaught":
+            info = frame.model_dump()
+            if frame.where == "uncaught":
                 st.exception = info
             elif len(st.caught) < 20:
                 st.caught.append(info)
             return None
         raise ProtocolViolation(f"frame {ch.KIND_NAMES.get(kind, kind)} is not allowed here")
+
+    def _register(self, kind: int, frame: frames.Register, t_ns: int) -> Endpoint | None:
+        st = self.state
+        if not self._catalog.known(frame.type):
+            raise ProtocolViolation(f"unknown message type {frame.type[:80]!r}")
+        if frame.md5sum != self._catalog.md5sum(frame.type):
+            raise ProtocolViolation(f"md5sum for {frame.type} does not match its definition")
+        table = st.publishers if kind == ch.ADVERTISE else st.subscribers
+        if frame.id not in table and len(st.publishers) + len(st.subscribers) >= MAX_ENDPOINTS:
+            raise EndpointLimitExceeded(f"registered more than {MAX_ENDPOINTS} publishers and subscribers; "
+                                        "it was stopped")
+        endpoint = Endpoint(ident=frame.id, topic=_topic(frame.topic), type=frame.type, md5sum=frame.md5sum,
+                            queue_size=frame.queue_size, latch=frame.latch, registered_ns=t_ns)
+        table[endpoint.ident] = endpoint
+        return endpoint if kind == ch.SUBSCRIBE else None
+
+    def _init(self, frame: frames.Init, t_ns: int) -> None:
+        """A node's name is fixed by its first init_node, and never one of the grader's own."""
+        st = self.state
+        if st.name is not None:
+            raise ProtocolViolation(f"INIT again as {frame.name[:80]!r} after init_node named it {st.name}: "
+                                    "a node's name is fixed by its first init_node")
+        if frame.name in self._reserved or frame.name.startswith("/rosgrade"):
+            raise ProtocolViolation(
+                f"init_node named it {frame.name}, a name reserved for the grader's own nodes "
+                f"({', '.join(sorted(self._reserved))}, /rosgrade...); on a real ROS system a second node with that "
+                "name shuts the first one down. Choose another name")
+        st.name, st.init_ns, st.disable_signals = frame.name, t_ns, frame.disable_signals
 
     def _output(self, stream: int, text: bytes) -> list[OutputLine] | None:
         st = self.state
@@ -245,16 +294,28 @@ class NodeLink:
 
     # -- writing -----------------------------------------------------------------------------------------------
     def _send(self, data: bytes) -> None:
-        try:
-            ch.write_all(self._write_fd, data)
-        except (BrokenPipeError, OSError):
-            raise NodeExited() from None
+        """Queue bytes for the node and write what its pipe takes now; the rest goes out while waiting to read."""
+        if len(self._pending) + len(data) > MAX_PENDING_BYTES:
+            raise NodeSilent(f"did not read the grader's messages ({len(self._pending)} bytes waiting)")
+        self._pending += data
+        self._flush()
 
-    def resume(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None) -> None:
-        """Send one batch: the new time, messages for the node's subscribers, maybe Ctrl+C, then RESUME."""
-        parts = [ch.encode_json(ch.ADVANCE, {"t_ns": t_ns, "clock_ns": clock_ns})]
-        parts += [ch.encode_id_bytes(ch.DELIVER, ident, data) for ident, data in deliveries]
+    def _flush(self) -> None:
+        try:
+            written = os.write(self._write_fd, self._pending)
+        except BlockingIOError:
+            return
+        except OSError:
+            raise NodeExited() from None
+        del self._pending[:written]
+
+    def resume(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None,
+               connections: dict[int, int] | None = None) -> None:
+        """Send one BATCH frame: the new time (with changed connection counts per topic handle), messages for
+        the node's subscribers and maybe Ctrl+C; the node runs until its next WAIT."""
+        header: dict = {"t_ns": t_ns, "clock_ns": clock_ns}
+        if connections:
+            header["connections"] = {str(ident): count for ident, count in connections.items()}
         if shutdown is not None:
-            parts.append(ch.encode_json(ch.SHUTDOWN, {"reason": shutdown}))
-        parts.append(ch.encode(ch.RESUME))
-        self._send(b"".join(parts))
+            header["shutdown"] = shutdown
+        self._send(ch.encode_batch(header, deliveries))

@@ -8,6 +8,7 @@ import signal
 import subprocess
 import sys
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 from grader.runtime import confine
@@ -20,7 +21,8 @@ except ImportError:  # Windows: no rlimits; the grader's own watchdogs still app
 
 NODELIB = Path(__file__).resolve().parents[1] / "nodelib"
 # Every node process (and whatever it starts without clearing its environment) carries this variable, so leftovers
-# can be found through /proc even when they left the node's process group.
+# can be found through /proc even when they left the node's process group. Its value starts with the grader's pid
+# (see marker_prefix), so one grader's leftovers are told apart from those of other graders on the same machine.
 MARKER_ENV = "ROSGRADE_NODE_MARKER"
 
 # Nothing of the grader's environment leaks into the node except what a terminal on a ROS machine would give it;
@@ -32,6 +34,11 @@ _REAP_S = 5.0
 
 class ProcessError(Exception):
     """A node process could not be started."""
+
+
+def marker_prefix(grader_pid: int | None = None) -> str:
+    """How the marker of every node started by the grader `grader_pid` (default: this process) begins."""
+    return f"{grader_pid or os.getpid()}-"
 
 
 def node_environment(spec: NodeSpec, channel: str, home: Path | str) -> dict[str, str]:
@@ -96,20 +103,37 @@ def _child_setup(pairs: list[tuple[int, tuple[int, int]]], uid: int | None) -> N
     signal.signal(signal.SIGINT, signal.SIG_DFL)
     if uid is not None:
         confine.drop_privileges(uid)
+    # Dies with the grader (bwrap and unshare pass it on to the whole sandbox). Set after the uid change, which
+    # clears it.
+    confine.die_with_parent()
+
+
+@dataclass(frozen=True)
+class Usage:
+    """Resources all of a node's processes hold together."""
+
+    memory_bytes: int
+    cpu_s: float
+    tasks: int
 
 
 class NodeProcess:
     """One running node: its Popen, the grader's ends of the channel pipes, and its raw-output file."""
 
+    # Popen pids of the nodes this grader has open: without namespaces, the grader's other new children are
+    # orphans of some node (the grader is their child subreaper, see confine.harden_grader).
+    _open: set[int] = set()
+
     def __init__(self, spec: NodeSpec, workdir: Path, raw_output: Path, limits: Limits) -> None:
         self.limits = limits
-        self.marker = secrets.token_hex(8)
+        self.marker = marker_prefix() + secrets.token_hex(8)
         self.peak_tasks = 0  # processes + threads seen in the node's sandbox when it was killed
         workdir.mkdir(parents=True, exist_ok=True)
         script = Path(os.path.abspath(spec.script))
-        command = [sys.executable, "-B", str(script), *spec.args]
         try:
-            self.plan = confine.plan(command, script, workdir, limits.file_mb)
+            self.plan = confine.plan(["-B", str(script), *spec.args], script, workdir, limits.file_mb)
+        except confine.ConfineError as exc:
+            raise ProcessError(str(exc)) from None
         except OSError as exc:
             raise ProcessError(f"could not prepare the sandbox for {script.name}: {exc}") from None
         self.notes = list(self.plan.notes)
@@ -144,6 +168,8 @@ class NodeProcess:
             for fd in (node_to_grader_r, node_to_grader_w, grader_to_node_r, grader_to_node_w):
                 os.close(fd)
             raise ProcessError(f"could not start {script.name}: {exc}") from None
+        NodeProcess._open.add(self.popen.pid)
+        self._started = confine.started_at(self.popen.pid) or 0
         os.close(grader_to_node_r)
         os.close(node_to_grader_w)
         self.read_fd = node_to_grader_r
@@ -186,6 +212,8 @@ class NodeProcess:
                 ns = confine.pid_namespace(pid)
                 if ns is not None and ns != own and ns == self._sandbox_ns:
                     found.add(pid)
+        else:
+            found.update(self._orphans())
         marker = f"{MARKER_ENV}={self.marker}".encode()
         tree = confine.descendants(self.popen.pid)
         for pid in confine.processes():
@@ -204,6 +232,18 @@ class NodeProcess:
             found.add(self.popen.pid)
         return sorted(found)
 
+    def _orphans(self) -> list[int]:
+        """Children of the grader started since this node that are no node: what a node double-forked away."""
+        return [pid for pid in confine.children_of(os.getpid())
+                if pid not in NodeProcess._open and (confine.started_at(pid) or 0) >= self._started]
+
+    def _reap_orphans(self) -> None:
+        for pid in self._orphans():
+            try:
+                os.waitpid(pid, os.WNOHANG)
+            except ChildProcessError:
+                pass
+
     def census(self) -> int:
         """Processes and threads the node has now (bwrap's own two processes not counted)."""
         pids = [p for p in self.leftovers() if p != self.popen.pid]
@@ -217,6 +257,39 @@ class NodeProcess:
                 continue
             total += int(fields.get("Threads", "1") or 1)
         return total
+
+    def _own_processes(self) -> list[int]:
+        """The node's live processes, without the sandbox's own (bwrap or unshare, and the pid 1 under it)."""
+        skip = {self.popen.pid, self._sandbox_init() if self.plan.sandboxed else None}
+        return [p for p in self.leftovers() if p not in skip
+                and not confine.status_fields(p).get("State", "Z").startswith("Z")]
+
+    def usage(self) -> Usage:
+        """What all of the node's processes use together now: memory (with its private /tmp and /dev/shm files),
+        CPU seconds, processes and threads."""
+        pids = self._own_processes()
+        memory = sum(confine.pss_bytes(pid) for pid in pids)
+        node = self._node_pid() if self.plan.sandboxed else None
+        if node is not None:
+            memory += sum(confine.tmpfs_used(f"/proc/{node}/root{folder}") for folder in (confine.SANDBOX_HOME,
+                                                                                      "/dev/shm"))
+        tasks = sum(int(confine.status_fields(pid).get("Threads", "1") or 1) for pid in pids)
+        return Usage(memory, sum(confine.cpu_seconds(pid) for pid in pids), tasks)
+
+    def over_limit(self) -> str | None:
+        """Why the node as a whole (every process it started) is over its limits, or None."""
+        usage = self.usage()
+        if usage.tasks > self.limits.processes:
+            self.peak_tasks = max(self.peak_tasks, usage.tasks)
+            return (f"started {usage.tasks} processes and threads, over its limit of {self.limits.processes} "
+                    "(a fork bomb or runaway threads?); it was stopped and everything it started killed")
+        if usage.memory_bytes > self.limits.memory_mb << 20:
+            return (f"its processes together used more than its memory limit of {self.limits.memory_mb} MB "
+                    f"({usage.memory_bytes >> 20} MB, files in its /tmp and /dev/shm included); it was stopped")
+        if usage.cpu_s > self.limits.cpu_s + 1:
+            return (f"its processes together used more than its CPU-time limit of {self.limits.cpu_s:g} s; "
+                    "it was stopped")
+        return None
 
     # -- signalling ---------------------------------------------------------------------------------------------
     def signal_group(self, sig: int) -> None:
@@ -249,6 +322,8 @@ class NodeProcess:
                     os.kill(pid, signal.SIGKILL)
                 except (ProcessLookupError, PermissionError):
                     pass
+            if not self.plan.sandboxed:
+                self._reap_orphans()
             if not left or time.monotonic() > deadline:
                 return
             time.sleep(0.01)
@@ -276,11 +351,14 @@ class NodeProcess:
         """Kill whatever is left of the node and release every descriptor."""
         self.signal_group(signal.SIGKILL)
         self.wait(5.0)
+        NodeProcess._open.discard(self.popen.pid)
         for fd in (self.read_fd, self.write_fd):
             try:
                 os.close(fd)
             except OSError:
                 pass
         self._raw.close()
+        if self.plan.uid is not None and not self.plan.sandboxed:
+            confine.remove_files_of(self.plan.uid)
         if self.plan.staged is not None:
             shutil.rmtree(self.plan.staged, ignore_errors=True)

@@ -9,7 +9,9 @@ import os
 import stat
 from pathlib import Path
 
-_SKIPPED_DIRS = {"build", "devel", "install", "log", "logs", "__pycache__", "node_modules", "__MACOSX"}
+SKIPPED_DIRS = {"build", "devel", "install", "log", "logs", "__pycache__", "node_modules", "__MACOSX"}
+# Far above any node a course asks for; compiling more would let a submission spend the grader's time and memory.
+MAX_SCRIPT_BYTES = 1024 * 1024
 
 
 class ScriptNotFound(Exception):
@@ -22,7 +24,7 @@ def candidates(root: Path, name: str) -> list[Path]:
         return [root] if root.name == name else []
     found = []
     for folder, dirs, files in os.walk(root):
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in _SKIPPED_DIRS)
+        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in SKIPPED_DIRS)
         if name in files:
             found.append(Path(folder) / name)
     # rosrun looks inside packages; scripts/ and src/ are where the course puts nodes.
@@ -41,10 +43,34 @@ def find_script(root: Path, name: str) -> tuple[Path, list[str]]:
     return found[0], notes
 
 
+def read_script(path: Path) -> bytes | str:
+    """The script's bytes, or why they cannot be read safely: only a regular file, at most MAX_SCRIPT_BYTES.
+
+    Opened without blocking and checked again once open, so a FIFO or device (also one swapped in after the first
+    check) is never read: reading a regular file cannot hang, and the size cap bounds it.
+    """
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+    except OSError as exc:
+        return f"{path.name} cannot be read ({exc.strerror}); submit it as a plain file."
+    with os.fdopen(fd, "rb") as handle:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            return f"{path.name} is not a regular file (a pipe, device or folder); submit the script as a plain file."
+        if info.st_size > MAX_SCRIPT_BYTES:
+            return f"{path.name} is too large ({info.st_size >> 10} KiB, limit {MAX_SCRIPT_BYTES >> 10} KiB) to be a node."
+        raw = handle.read(MAX_SCRIPT_BYTES + 1)
+    if len(raw) > MAX_SCRIPT_BYTES:
+        return f"{path.name} is too large (it grew past {MAX_SCRIPT_BYTES >> 10} KiB while being read) to be a node."
+    return raw
+
+
 def check_script(path: Path) -> list[str]:
     """What `rosrun pkg script.py` on a ROS machine would trip over, each with the fix."""
     notes: list[str] = []
-    raw = path.read_bytes()
+    raw = read_script(path)
+    if isinstance(raw, str):
+        return [raw]
     first_line = raw.split(b"\n", 1)[0]
     if not first_line.startswith(b"#!"):
         notes.append(f"{path.name} has no shebang line: rosrun would fail with 'Exec format error'. "
@@ -66,11 +92,18 @@ def check_script(path: Path) -> list[str]:
         notes.append(f"{path.name} is not valid UTF-8 (byte {exc.start}): Python 3 cannot read it. "
                      "Save it as UTF-8.")
         return notes
+    if "\0" in source:
+        line = source.count("\n", 0, source.index("\0")) + 1
+        notes.append(f"{path.name} line {line} contains a NUL byte: Python refuses to run the file. Remove it "
+                     "(it often comes from copying code out of a PDF or a binary editor).")
+        return notes
     try:
         compile(source, str(path), "exec", dont_inherit=True)
     except SyntaxError as exc:
         hint = " This looks like Python 2 code; ROS Noetic runs Python 3." if _looks_like_python2(source) else ""
         notes.append(f"{path.name} line {exc.lineno}: SyntaxError: {exc.msg}.{hint}")
+    except (ValueError, RecursionError, MemoryError) as exc:  # e.g. nesting too deep for the compiler
+        notes.append(f"{path.name} cannot be compiled by Python ({type(exc).__name__}); simplify the code.")
     return notes
 
 

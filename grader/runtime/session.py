@@ -1,42 +1,55 @@
 """The lockstep loop: advance the world only while every node waits, deliver what is due, record everything.
 
-A node runs only between the grader's RESUME and its own WAIT, and the world moves only while all nodes wait,
+A node runs only between the grader's BATCH and its own WAIT, and the world moves only while all nodes wait,
 so the recording depends on nothing but the node's code and the scenario: the machine's load cannot change it.
 """
 from __future__ import annotations
 
 import json
+import os
+import shutil
 import signal
 import tempfile
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
+from typing import TextIO
 
 import mujoco
 
-from grader import __version__
+from grader import __version__, timing
 from grader.nodelib import rosgrade_channel as ch
-from grader.recording import (Recorder, default_catalog, decode_twist, ground_truth_bytes, log_bytes,
-                              odometry_bytes, string_bytes, tf_bytes, twist_bytes)
+from grader.recording import Recorder, default_catalog, decode_twist, log_bytes, string_bytes, twist_bytes
+from grader.runtime import confine
 from grader.runtime.diagnostics import diagnose, topic_summary
-from grader.runtime.node_link import (Endpoint, LogLine, NodeExited, NodeLink, NodeSilent, OutputLine,
-                                      ProtocolViolation, Publication)
+from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
+                                      NodeSilent, OutputLine, ProtocolViolation, Publication)
 from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
-from sim import CommandSample, GroundTruthSample, OdometrySample, TransformSample, World
+from grader.runtime import world_codec
+from sim import CommandSample, TurtlesimWorld, World, WorldTopic, open_world
 
 # Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
 # published before that are lost. A new subscriber to a running publisher (Gazebo's /odom) gets the next message.
 CONNECT_DELAY_NS = 50_000_000
+# The robot's base as a receiver of latched messages (node subscribers are (node index, handle) pairs).
+ROBOT = "robot"
 # Publications that never reached a subscriber are recorded under this prefix, apart from what the robot received.
 LOST_PREFIX = "/rosgrade/lost"
+# A node's publications on a topic only the world or the grader publish are recorded under this prefix, never
+# delivered, and never on the world's own topic.
+IGNORED_PREFIX = "/rosgrade/ignored"
 WORLD_CALLERID = "/gazebo"
 DRIVER_CALLERID = "/rosgrade_driver"
-GROUND_TRUTH_TOPIC = "/ground_truth/odom"
+# Names of the grader's own nodes (and real ROS's /rosout): a student node may not take them.
+RESERVED_NAMES = frozenset({WORLD_CALLERID, DRIVER_CALLERID, "/rosout"})
 TWIST = "geometry_msgs/Twist"
 # Wall seconds the runtime waits for a process to go once its channel has closed, before killing it.
 EXIT_WAIT_WALL_S = 5.0
+WORKROOT_PREFIX = "rosgrade-node-"
+# Wall seconds between two looks at what all of a node's processes use together (a /proc walk: not every step).
+USAGE_PERIOD_S = 1.0
 
 
 class RunError(Exception):
@@ -62,6 +75,8 @@ class _Node:
     alive: bool = True
     wake_ns: int | None = None
     deliveries: list[tuple[int, bytes]] = field(default_factory=list)
+    # The connection count per topic handle the node was last told (what its get_num_connections() returns).
+    told_connections: dict[int, int] = field(default_factory=dict)
     term_ns: int | None = None
     kill_ns: int | None = None
 
@@ -78,7 +93,7 @@ class Session:
         self.recording_path = recording
         self.log_path = log
         self.catalog = default_catalog()
-        self.world: World | None = None  # built after the node processes start, while they import
+        self.world: World | TurtlesimWorld | None = None  # built after the node processes start, while they import
         self.start_ns = spec.scenario.start_ns
         self.end_ns = spec.scenario.end_ns
         self.shutdown_ns = spec.scenario.shutdown_ns
@@ -86,18 +101,34 @@ class Session:
         self.seq: dict[str, int] = {}
         self.nodes: list[_Node] = []
         self.received: dict[str, int] = {}  # command topic -> commands the robot received from nodes
+        self.world_topics: set[tuple[str, str]] = set()  # (topic, type) the world publishes, as it publishes
+        self.publications: dict[str, WorldTopic] = {}  # what the world declares it publishes, by topic
         self._log_file = None
+        self._node_logs: dict[int, TextIO] = {}  # output="log" nodes' own log files, by node index
         self._recorder: Recorder | None = None
+        self._next_usage_check = 0.0
 
     # -- public ------------------------------------------------------------------------------------------------
     def run(self) -> RunResult:
         wall0 = time.monotonic()
         self.recording_path.parent.mkdir(parents=True, exist_ok=True)
-        workroot = Path(tempfile.mkdtemp(prefix="rosgrade-node-"))
+        # The nodes' host folders (staged packages; HOME without a sandbox): removed on every path out of the run.
+        _remove_stale_workroots()
+        workroot = Path(tempfile.mkdtemp(prefix=f"{WORKROOT_PREFIX}{os.getpid()}-"))
         try:
-            for index, node_spec in enumerate(self.spec.nodes):
-                self._spawn(node_spec, workroot / f"node{index}")
-            self.world = World(self.spec.scenario)
+            return self._run_in(workroot, wall0)
+        finally:
+            shutil.rmtree(workroot, ignore_errors=True)
+
+    def _run_in(self, workroot: Path, wall0: float) -> RunResult:
+        try:
+            with timing.stage("node start-up", absorb=True):
+                for index, node_spec in enumerate(self.spec.nodes):
+                    self._spawn(node_spec, workroot / f"node{index}")
+            with timing.stage("world set-up (model compile)"):
+                self.world = open_world(self.spec.scenario)
+            self.publications = {p.topic: p for p in self.world.publications}
+            self.world_topics |= {(p.topic, p.type) for p in self.world.publications if p.to_nodes}
         except BaseException:
             for node in self.nodes:
                 node.process.close()
@@ -106,23 +137,29 @@ class Session:
                 open(self.log_path, "w", encoding="utf-8") as log_file:
             self._recorder, self._log_file = rec, log_file
             try:
-                for node in list(self.nodes):
-                    self._handshake(node)
+                with timing.stage("node start-up", absorb=True):
+                    for node in list(self.nodes):
+                        self._handshake(node)
                 self._loop(wall0)
             finally:
-                for node in self.nodes:
-                    if node.alive:
-                        self._stop(node, "stopped_at_end",
-                                   "still running when the scenario ended; stopped by the grader")
-                    node.process.close()
+                with timing.stage("stopping nodes"):
+                    for node in self.nodes:
+                        if node.alive:
+                            self._stop(node, "stopped_at_end",
+                                       "still running when the scenario ended; stopped by the grader")
+                        node.process.close()
+                for node_log in self._node_logs.values():
+                    node_log.close()
             diagnostics = diagnose(self)
             result = RunResult(
                 recording=self.recording_path, log=self.log_path, started_s=self.start_ns / 1e9,
                 ended_s=self.world.time_ns / 1e9,
                 shutdown_requested_s=_s(self.shutdown_ns) if self.shutdown_sent else None,
                 nodes=[n.outcome for n in self.nodes], diagnostics=diagnostics, topics=topic_summary(self),
-                wall_s=time.monotonic() - wall0)
+                wall_s=time.monotonic() - wall0, isolation=confine.detect().isolation)
             rec.add_metadata("rosgrade.run", self._run_metadata(result))
+        timing.count("runs")
+        timing.count("simulated milliseconds", (self.world.time_ns - self.start_ns) // 1_000_000)
         return result
 
     # -- starting and stopping nodes ---------------------------------------------------------------------------
@@ -133,7 +170,7 @@ class Session:
         except ProcessError as exc:
             raise RunError(str(exc)) from None
         link = NodeLink(process.read_fd, process.write_fd, self.catalog, self.spec.limits.silent_wall_s,
-                        self.spec.limits.output_bytes)
+                        self.spec.limits.output_bytes, RESERVED_NAMES)
         self.nodes.append(_Node(node_spec, process, link,
                                 NodeOutcome(script=node_spec.script.name, findings=list(process.notes))))
 
@@ -143,8 +180,7 @@ class Session:
         try:
             link.handshake({"t_ns": t, "params": {"/use_sim_time": True, **node_spec.params},
                             "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t),
-                            # In its own PID namespace the node's pid is the same on every run.
-                            "stable_pid": node.process.plan.sandboxed})
+                            "world_topics": sorted([topic, type_name] for topic, type_name in self.world_topics)})
         except (NodeExited, NodeSilent, ProtocolViolation) as exc:
             self._node_failed(node, exc, t)
             return
@@ -175,6 +211,12 @@ class Session:
         node.outcome.exception = node.link.state.exception
         for line in node.link.flush_output():
             self._output(node, line, self.world.time_ns)
+        if node.spec.required and status != "stopped_at_end" and not self.shutdown_sent:
+            # roslaunch: "REQUIRED process has died! Initiating shutdown!" -- every other node gets Ctrl+C now.
+            self.shutdown_ns = self.world.time_ns
+            node.outcome.findings.append(
+                f"{node.outcome.name or node.outcome.script} is required=\"true\" and ended at "
+                f"{self.world.time_ns / 1e9:.3f} s, so roslaunch shut every other node down (Ctrl+C).")
 
     def _node_failed(self, node: _Node, exc: Exception, t: int) -> None:
         if isinstance(exc, NodeExited):
@@ -187,7 +229,7 @@ class Session:
         elif isinstance(exc, NodeSilent):
             self._stop(node, "timeout", f"the node {exc}; it was stopped (an endless loop outside rospy calls, "
                                         "or a blocking call such as input() with nothing to read)")
-        elif isinstance(exc, OutputLimitExceeded):
+        elif isinstance(exc, (OutputLimitExceeded, EndpointLimitExceeded)):
             self._stop(node, "killed_by_limit", str(exc))
         else:
             self._stop(node, "protocol_violation", f"the node broke the grader's channel: {exc}")
@@ -196,7 +238,7 @@ class Session:
     def _loop(self, wall0: float) -> None:
         limits = self.spec.limits
         while True:
-            alive = [n for n in self.nodes if n.alive]
+            alive = self._police([n for n in self.nodes if n.alive])
             if time.monotonic() - wall0 > limits.wall_s:
                 for node in alive:
                     self._stop(node, "timeout", f"the run exceeded its wall-clock budget of {limits.wall_s:g} s")
@@ -204,11 +246,16 @@ class Session:
             # The world runs to the scenario's end even after every node has gone: a robot left moving is seen moving.
             horizon = self.end_ns
             t = self.world.time_ns
+            self._replay_latched(t)
             pending_now = any(n.deliveries for n in alive)
             if pending_now:
                 t_next = t
             else:
-                candidates = [horizon, self.world.next_output_ns()]
+                # The world stops the loop only for what some node subscribes to; the rest is recorded on the way.
+                subscribed = {sub.topic for node in alive for sub in node.link.state.subscribers.values()
+                              if not sub.closed}
+                candidates = [c for c in (horizon, self.world.next_output_ns(subscribed)) if c is not None]
+                candidates += self._latched_connect_times(t)
                 for node in alive:
                     term = node.term_ns if node.kill_ns is None else None  # SIGTERM already sent: next is SIGKILL
                     candidates += [c for c in (node.wake_ns, term, node.kill_ns) if c is not None]
@@ -218,8 +265,13 @@ class Session:
             if t_next > horizon:
                 t_next = horizon
             if t_next > t:
-                for sample in self.world.advance_to(t_next):
+                started = time.perf_counter()
+                samples = self.world.advance_to(t_next)
+                stepped = time.perf_counter()
+                for sample in samples:
                     self._world_sample(sample)
+                timing.add("physics and sensors", stepped - started)
+                timing.add("world messages (encode, record, queue)", time.perf_counter() - stepped)
             if t_next >= horizon:
                 return
             shutdown = None
@@ -243,16 +295,33 @@ class Session:
                 if due or node.deliveries or shutdown:
                     self._step(node, t_next, shutdown=shutdown)
 
+    def _police(self, alive: list[_Node]) -> list[_Node]:
+        """Stop nodes whose processes together are over a limit (each process alone is held by its rlimits)."""
+        now = time.monotonic()
+        if now < self._next_usage_check:
+            return alive
+        self._next_usage_check = now + USAGE_PERIOD_S
+        for node in alive:
+            why = node.process.over_limit()
+            if why:
+                self._stop(node, "killed_by_limit", why)
+        return [n for n in alive if n.alive]
+
     def _step(self, node: _Node, t: int, shutdown: str | None = None, first: bool = False) -> None:
         """Let one node run at world time t until it yields, handling everything it does on the way."""
         link = node.link
+        timing.count("node steps (BATCH frames)")
+        with timing.stage("node steps (channel, node publications)"):
+            self._run_node(node, link, t, shutdown, first)
+
+    def _run_node(self, node: _Node, link: NodeLink, t: int, shutdown: str | None, first: bool) -> None:
         try:
             if not first:
                 clock = (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if link.state.init_ns is not None else 0
                 deliveries, node.deliveries = node.deliveries, []
-                link.resume(t, clock, deliveries, shutdown)
+                link.resume(t, clock, deliveries, shutdown, self._connection_changes(node, t))
             node.wake_ns = link.run_until_wait(t, lambda event: self._node_event(node, event, t))
-        except (NodeExited, NodeSilent, ProtocolViolation, OutputLimitExceeded) as exc:
+        except (NodeExited, NodeSilent, ProtocolViolation, OutputLimitExceeded, EndpointLimitExceeded) as exc:
             self._node_failed(node, exc, t)
 
     # -- what nodes do -----------------------------------------------------------------------------------------
@@ -269,37 +338,141 @@ class Session:
                                  log_bytes(t, self._next_seq("/rosout"), event.level, node.callerid, event.msg,
                                            event.file, event.function, event.line,
                                            sorted({e.topic for e in node.link.state.publishers.values()})),
-                                 t, callerid=node.callerid)
+                                 t, callerid=node.callerid, origin="node")
 
-    def _connected(self, node: _Node, endpoint: Endpoint, t: int) -> bool:
-        """Whether a publisher created at its registration (or at init_node, if earlier) has connected by t."""
-        init_ns = node.link.state.init_ns
-        since = max(endpoint.registered_ns, t if init_ns is None else init_ns)
-        return t >= since + CONNECT_DELAY_NS
+    # -- connections (as a ROS 1 master and TCPROS would make them) -------------------------------------------
+    @staticmethod
+    def _ready_ns(publisher: Endpoint) -> int:
+        """When a node's publisher has connected to the subscribers that existed when it registered."""
+        return publisher.registered_ns + CONNECT_DELAY_NS
+
+    def _receivers(self, publisher: Endpoint, t: int) -> list:
+        """Who a node's publisher is connected to at t: the robot's base (ROBOT) and (node index, subscriber handle)
+        pairs; a subscriber that registers after the publisher connected is connected at once."""
+        if t < self._ready_ns(publisher):
+            return []
+        found: list = []
+        if publisher.topic in self.world.command_topics and publisher.type == TWIST:
+            found.append(ROBOT)
+        for index, other in enumerate(self.nodes):
+            if other.alive:
+                found += [(index, sub.ident) for sub in other.link.state.subscribers.values()
+                          if sub.topic == publisher.topic and sub.type == publisher.type and not sub.closed
+                          and t >= sub.registered_ns]
+        return found
+
+    def _publishers_of(self, subscriber: Endpoint, t: int) -> set:
+        """The peers (the world, or node indexes) whose publishers a node's subscriber is connected to at t."""
+        peers: set = {ROBOT} if (subscriber.topic, subscriber.type) in self.world_topics else set()
+        for index, other in enumerate(self.nodes):
+            if other.alive and any(pub.topic == subscriber.topic and pub.type == subscriber.type and not pub.closed
+                                   and t >= max(self._ready_ns(pub), subscriber.registered_ns)
+                                   for pub in other.link.state.publishers.values()):
+                peers.add(index)
+        return peers
+
+    def _connection_changes(self, node: _Node, t: int) -> dict[int, int]:
+        """The node's connection counts at t that differ from what it was last told (one per peer node, as the
+        connections of real rospy are per node, not per Subscriber object)."""
+        counts = {}
+        for pub in node.link.state.publishers.values():
+            if not pub.closed:
+                counts[pub.ident] = len({key if key == ROBOT else key[0] for key in self._receivers(pub, t)})
+        for sub in node.link.state.subscribers.values():
+            if not sub.closed:
+                counts[sub.ident] = len(self._publishers_of(sub, t))
+        changes = {ident: n for ident, n in counts.items() if node.told_connections.get(ident, 0) != n}
+        node.told_connections.update(changes)
+        return changes
+
+    def _route(self, publisher: Endpoint, data: bytes, t: int) -> None:
+        """Hand a node's publication to everything connected to its publisher at t."""
+        for key in self._receivers(publisher, t):
+            self._hand_over(key, publisher, data)
+            if publisher.latched is not None:
+                publisher.latched.receivers.add(key)
+
+    def _hand_over(self, key, publisher: Endpoint, data: bytes) -> None:
+        if key == ROBOT:
+            linear, angular = decode_twist(data)
+            self.world.command(publisher.topic, linear=linear, angular=angular)
+            self.received[publisher.topic] = self.received.get(publisher.topic, 0) + 1
+        else:
+            index, ident = key
+            self.nodes[index].deliveries.append((ident, data))
+            self.nodes[index].link.state.subscribers[ident].count += 1
+
+    def _replay_latched(self, t: int) -> None:
+        """A latched publisher's last message goes out when the publisher connects (recorded on its topic then,
+        if it was published before), and again to each subscriber that connects later, as real rospy does."""
+        for node in self.nodes:
+            if not node.alive:
+                continue
+            for pub in node.link.state.publishers.values():
+                held = pub.latched
+                if held is None or pub.closed or t < self._ready_ns(pub):
+                    continue
+                if not held.sent:
+                    held.sent = True
+                    self._recorder.write(pub.topic, pub.type, held.data, t, callerid=node.callerid, latching=True,
+                                         origin="node")
+                for key in self._receivers(pub, t):
+                    if key not in held.receivers:
+                        held.receivers.add(key)
+                        self._hand_over(key, pub, held.data)
+
+    def _latched_connect_times(self, t: int) -> list[int]:
+        """Future times at which a held latched message goes out (its publisher connects)."""
+        return [self._ready_ns(pub) for node in self.nodes if node.alive
+                for pub in node.link.state.publishers.values()
+                if pub.latched is not None and not pub.closed and self._ready_ns(pub) > t]
 
     def _publication(self, node: _Node, endpoint: Endpoint, data: bytes, t: int) -> None:
-        if endpoint.topic in (self.world.mode.odometry.topic, GROUND_TRUTH_TOPIC, "/clock", "/rosgrade/stdout",
-                              "/rosgrade/stderr"):  # only the world and the grader speak here: not recorded
+        world_only = endpoint.topic in self.publications and not self.publications[endpoint.topic].shared
+        if world_only or endpoint.topic == "/clock" or endpoint.topic.startswith("/rosgrade/"):
+            # only the world and the grader speak here
             note = (f"{node.outcome.script} published on {endpoint.topic}, which only the simulated robot and the "
                     "grader publish; those messages were ignored.")
             if note not in node.outcome.findings:
                 node.outcome.findings.append(note)
+            self._recorder.write(IGNORED_PREFIX + endpoint.topic, endpoint.type, data, t, callerid=node.callerid,
+                                 origin="node")
             return
-        if not self._connected(node, endpoint, t):
-            endpoint.dropped_before_connect += 1
-            self._recorder.write(LOST_PREFIX + endpoint.topic, endpoint.type, data, t, callerid=node.callerid)
+        connected = t >= self._ready_ns(endpoint)
+        if endpoint.latch:
+            held = endpoint.latched
+            if held is not None and not held.sent:  # replaced before it could go out: that one is lost
+                self._lost(node, endpoint, held.data, held.t_ns)
+            endpoint.latched = Latched(data, t, sent=connected)
+            if not connected:
+                return
+        if not connected:
+            self._lost(node, endpoint, data, t)
             return
-        self._recorder.write(endpoint.topic, endpoint.type, data, t, callerid=node.callerid, latching=endpoint.latch)
-        if endpoint.topic in self.world.command_topics and endpoint.type == TWIST:
-            linear, angular = decode_twist(data)
-            self.world.command(endpoint.topic, linear=linear, angular=angular)
-            self.received[endpoint.topic] = self.received.get(endpoint.topic, 0) + 1
-        self._deliver(endpoint.topic, endpoint.type, data)
+        self._recorder.write(endpoint.topic, endpoint.type, data, t, callerid=node.callerid, latching=endpoint.latch,
+                             origin="node")
+        self._route(endpoint, data, t)
+
+    def _lost(self, node: _Node, endpoint: Endpoint, data: bytes, t: int) -> None:
+        endpoint.dropped_before_connect += 1
+        self._recorder.write(LOST_PREFIX + endpoint.topic, endpoint.type, data, t, callerid=node.callerid,
+                             origin="node")
 
     def _output(self, node: _Node, line: OutputLine, t: int) -> None:
         topic = "/rosgrade/stdout" if line.stream == 1 else "/rosgrade/stderr"
-        self._recorder.write(topic, "std_msgs/String", string_bytes(line.text), t, callerid=node.callerid)
-        self._log_file.write(f"[{t / 1e9:12.6f}] {'out' if line.stream == 1 else 'err'} | {line.text}\n")
+        self._recorder.write(topic, "std_msgs/String", string_bytes(line.text), t, callerid=node.callerid,
+                             origin="node")
+        self._text_log(node).write(f"[{t / 1e9:12.6f}] {'out' if line.stream == 1 else 'err'} | {line.text}\n")
+
+    def _text_log(self, node: _Node) -> TextIO:
+        """Where a node's text goes: the run's log ("screen"), or a file of its own (output="log")."""
+        if node.spec.output == "screen":
+            return self._log_file
+        index = self.nodes.index(node)
+        if index not in self._node_logs:
+            path = node_log_path(self.log_path, index)
+            self._node_logs[index] = open(path, "w", encoding="utf-8")  # noqa: SIM115 -- closed at the end of run()
+        return self._node_logs[index]
 
     # -- what the world does -----------------------------------------------------------------------------------
     def _next_seq(self, topic: str) -> int:
@@ -308,25 +481,21 @@ class Session:
         return seq
 
     def _world_sample(self, sample: object) -> None:
-        rec = self._recorder
-        if isinstance(sample, OdometrySample):
-            data = odometry_bytes(sample, self._next_seq(sample.topic))
-            rec.write(sample.topic, "nav_msgs/Odometry", data, sample.t_ns, callerid=WORLD_CALLERID)
-            self._deliver(sample.topic, "nav_msgs/Odometry", data)
-        elif isinstance(sample, TransformSample):
-            data = tf_bytes(sample, self._next_seq("/tf"))
-            rec.write("/tf", "tf2_msgs/TFMessage", data, sample.t_ns, callerid=WORLD_CALLERID)
-            self._deliver("/tf", "tf2_msgs/TFMessage", data)
-        elif isinstance(sample, GroundTruthSample):
-            data = ground_truth_bytes(sample, self._next_seq(GROUND_TRUTH_TOPIC),
-                                      child_frame_id=self.world.mode.odometry.child_frame_id)
-            rec.write(GROUND_TRUTH_TOPIC, "nav_msgs/Odometry", data, sample.t_ns, callerid=WORLD_CALLERID)
-        elif isinstance(sample, CommandSample):
-            rec.write(sample.topic, TWIST, twist_bytes(sample.linear, sample.angular), sample.t_ns,
-                      callerid=DRIVER_CALLERID)
+        """Record one thing the world did; deliver it to subscribers when its topic is declared for nodes."""
+        if isinstance(sample, CommandSample):  # the scripted driver's command: recorded as the grader's
+            self._recorder.write(sample.topic, TWIST, twist_bytes(sample.linear, sample.angular), sample.t_ns,
+                                 callerid=DRIVER_CALLERID, origin="grader")
+            return
+        publication = self.publications[sample.topic]
+        data = world_codec.encode(sample, self._next_seq(sample.topic))
+        self._recorder.write(sample.topic, publication.type, data, sample.t_ns, callerid=WORLD_CALLERID,
+                             origin="world")
+        if publication.to_nodes:
+            self._deliver(sample.topic, publication.type, data)
 
     def _deliver(self, topic: str, type_name: str, data: bytes) -> None:
-        """Queue a message for every live subscriber of its topic and type, for the nodes' next batch."""
+        """Queue a message the world publishes for every live subscriber of its topic and type (next batch)."""
+        self.world_topics.add((topic, type_name))
         for node in self.nodes:
             if not node.alive:
                 continue
@@ -343,7 +512,7 @@ class Session:
             "mujoco_version": mujoco.__version__,
             "robot": scenario.robot,
             "base_mode": self.world.mode_name,
-            "odometry_topic": self.world.mode.odometry.topic,
+            "odometry_topic": self.world.odometry_topic,
             "command_topics": json.dumps(list(self.world.command_topics)),
             "scenario_name": self.spec.name,
             "scenario": scenario.model_dump_json(),
@@ -377,6 +546,22 @@ def _tail(path: Path, limit: int = 600) -> str:
 def _wall_epoch(t_ns: int) -> float:
     """A fixed wall-clock epoch for the node's time.time(), so log lines are identical run to run."""
     return 1_700_000_000.0 - t_ns / 1e9
+
+
+def node_log_path(log: Path, index: int) -> Path:
+    """Where the text of the run's node number `index` goes when it has output="log" (beside the run's log)."""
+    return log.with_suffix(f".node{index}.log")
+
+
+def _remove_stale_workroots() -> None:
+    """Remove the node folders of graders that were killed (SIGKILL, power loss) before they could."""
+    for folder in Path(tempfile.gettempdir()).glob(f"{WORKROOT_PREFIX}*-*"):
+        try:
+            os.kill(int(folder.name[len(WORKROOT_PREFIX):].split("-")[0]), 0)
+        except ProcessLookupError:
+            shutil.rmtree(folder, ignore_errors=True)
+        except (ValueError, OSError):
+            pass  # not ours to judge, or its grader is alive (maybe another user's)
 
 
 def run(spec: RunSpec, recording: Path, log: Path) -> RunResult:

@@ -47,6 +47,10 @@ class NodeSpec:
     stdin: str | None = None
     ros_namespace: str | None = None
     params: dict[str, object] = field(default_factory=dict)
+    # As roslaunch's node attributes: a required node that ends stops the others (Ctrl+C to each); a node with
+    # output "log" prints to its own log file instead of the run's log (the recording holds its text either way).
+    required: bool = False
+    output: Literal["screen", "log"] = "screen"
 
 
 @dataclass(frozen=True)
@@ -89,6 +93,7 @@ class RunResult:
     diagnostics: list[str]
     topics: list[str] = field(default_factory=list)  # what each node published and received, with counts
     wall_s: float = 0.0
+    isolation: str = ""  # how the nodes were confined (confine.ISOLATION)
 
     @property
     def status(self) -> str:

@@ -12,7 +12,8 @@ if TYPE_CHECKING:
     from grader.runtime.spec import Limits
 
 # What a node can import in the grader, for "X is not available" messages.
-AVAILABLE = "rospy, the standard ROS message packages, tf, numpy and the Python standard library"
+AVAILABLE = ("rospy, the standard ROS message packages, tf, tf2_ros, tf2_geometry_msgs, message_filters, roslib, rospkg, "
+             "numpy and the Python standard library")
 
 _SIGNAL_TEXT = {
     signal.SIGSEGV: "crashed with a segmentation fault (SIGSEGV): the Python process itself died, e.g. from a bad "

@@ -6,15 +6,18 @@ import signal
 import sys
 import time
 import types
+from dataclasses import dataclass
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
 
-from grader.report import CriterionResult, SubmissionReport, TaskReport
+from grader.report import CriterionResult, RubricStamp, SubmissionReport, TaskReport
 
 CALL_LOG_ENV = "ROSGRADE_TEST_CALL_LOG"
+RUBRICS_ENV = "ROSGRADE_TEST_RUBRICS"  # the folder the fake rubrics name as their files (default: rubrics/)
+ROOT = Path(__file__).resolve().parents[2]
 
 
 class SubmissionError(Exception):
@@ -73,8 +76,10 @@ def make_report(submission: str = "alice", radius_ok: bool = True, square_status
     return SubmissionReport(submission=submission, tasks=tasks).total()
 
 
-def fake_grade_submission(submission: Path, out_dir: Path, task_ids: Any = None) -> SubmissionReport:
-    """Grades by the submission's name: 'crash' raises, 'bad' is unusable, 'interrupt' sends Ctrl+C to the batch."""
+def fake_grade_submission(submission: Path, out_dir: Path, task_ids: Any = None, rubrics: Any = None,
+                          jobs: int = 1) -> SubmissionReport:
+    """Grades by the submission's name: 'crash' raises, 'bad' is unusable, 'interrupt' sends Ctrl+C to the batch,
+    'slow' takes 30 s, 'nap' 0.3 s, 'die' is killed."""
     name = Path(submission).stem
     log = os.environ.get(CALL_LOG_ENV)
     if log:
@@ -89,6 +94,8 @@ def fake_grade_submission(submission: Path, out_dir: Path, task_ids: Any = None)
         time.sleep(30)
     if "slow" in name:
         time.sleep(30)
+    if "nap" in name:  # a little grading time, so a kill can land while jobs are running
+        time.sleep(0.3)
     if "die" in name:
         os.kill(os.getpid(), signal.SIGKILL)
     if "noisy" in name:
@@ -99,10 +106,30 @@ def fake_grade_submission(submission: Path, out_dir: Path, task_ids: Any = None)
     return report
 
 
+@dataclass
+class FakeGraded:
+    """What the fake grade_as_data hands back (the shape of grader.grading.GradedSubmission)."""
+
+    report: SubmissionReport
+    files: dict[str, bytes]
+
+
+def fake_grade_as_data(submission: bytes, label: str, task_ids: Any, rubrics: Any, stage_root: Any = None) -> FakeGraded:
+    """Grades like fake_grade_submission (by the submission's name), stamped with the rubric files handed over."""
+    report = fake_grade_submission(Path(label), Path("unused"), task_ids)
+    files = {f.task_id: f for f in rubrics}
+    tasks = [t.model_copy(update={
+        "rubric": RubricStamp(file=files[t.id].source, sha256=files[t.id].sha256, scenarios=["nominal"]),
+        "recordings": [f"{t.id}/nominal.mcap"] if t.status == "graded" else []}) for t in report.tasks]
+    data = {f"{t.id}/nominal.mcap": b"fake mcap of " + submission[:16] for t in tasks if t.recordings}
+    return FakeGraded(report.model_copy(update={"tasks": tasks, "recording_format": "fake"}), data)
+
+
 def grading_module() -> types.ModuleType:
     module = types.ModuleType("grader.grading")
     module.SubmissionError = SubmissionError
     module.grade_submission = fake_grade_submission
+    module.grade_as_data = fake_grade_as_data
     return module
 
 
@@ -113,6 +140,10 @@ def rubric_module() -> types.ModuleType:
     def rubric(**fields: Any) -> SimpleNamespace:
         made = SimpleNamespace(**fields)
         made.restricted_to = lambda names: made  # the fake scoring ignores scenarios
+        made.scenarios = [SimpleNamespace(name="nominal", model_dump=lambda mode="json": {"name": "nominal"})]
+        made.nodes = [SimpleNamespace(script=f"{made.id}.py", aliases=[])]
+        for c in made.criteria:
+            c.metric = "fake"
         return made
 
     rubrics = {
@@ -128,7 +159,19 @@ def rubric_module() -> types.ModuleType:
     }
     module = types.ModuleType("grader.rubric")
     module.RubricError = RubricError
-    module.load_rubrics = lambda: dict(rubrics)
+    def load_rubrics() -> dict[str, Any]:
+        for made in rubrics.values():  # read when asked, as the real module reads its folder
+            made.source = Path(os.environ.get(RUBRICS_ENV) or ROOT / "rubrics") / f"{made.id}.toml"
+        return dict(rubrics)
+
+    def task_table(extra: Any = ()) -> dict[str, Any]:
+        for path in extra:
+            raise RubricError(f"{path}: the fake rubric module reads no files")
+        return load_rubrics()
+
+    module.load_rubrics = load_rubrics
+
+    module.task_table = task_table
     return module
 
 
@@ -161,7 +204,7 @@ class FakeRecording:
         linear = np.zeros((len(t), 3))
         angular = np.zeros((len(t), 3))
         linear[:, 0], angular[:, 2] = 0.1, 0.2
-        return SimpleNamespace(t=t, linear=linear, angular=angular)
+        return SimpleNamespace(t=t, linear=linear, angular=angular, origin=None)
 
     def output_lines(self) -> list[tuple[float, str, str]]:
         return [(float(s), "stdout", f"x={self._odom.x[s * 10]:.2f} [m], y={self._odom.y[s * 10]:.2f} [m], yaw=1.0")
@@ -188,6 +231,7 @@ def recording_module() -> types.ModuleType:
 
 def scoring_module() -> types.ModuleType:
     module = types.ModuleType("grader.scoring")
+    module.ScoringError = type("ScoringError", (Exception,), {})
 
     def score_task(rubric: Any, recordings: dict[str, Any]) -> TaskReport:
         task = circle_task()

@@ -14,8 +14,9 @@ from .conftest import calls
 
 
 def make_students(root: Path, names: list[str]) -> Path:
+    """One submission per name: a package folder, or a .zip for names ending in .zip."""
     folder = root / "submissions"
-    folder.mkdir()
+    folder.mkdir(exist_ok=True)
     for name in names:
         if name.endswith(".zip"):
             with zipfile.ZipFile(folder / name, "w") as archive:
@@ -33,11 +34,11 @@ def rows(out: Path) -> list[dict[str, str]]:
 
 def test_parallel_batch_writes_every_report_and_the_gradebook(grading, tmp_path, capsys):
     folder = make_students(tmp_path, ["ann", "ben", "cat.zip", "dan_wobbly", "eve"])
-    assert main(["batch", str(folder), "--out", "out", "-j", "3"]) == 0
+    assert main(["batch", str(folder), "--out", "out", "-j", "3", "--task", "move_circle", "--task", "move_square"]) == 0
     assert sorted(p.parent.name for p in Path("out").glob("*/report.json")) == ["ann", "ben", "cat", "dan_wobbly", "eve"]
     table = rows(Path("out"))
     assert [r["student"] for r in table] == ["ann", "ben", "cat", "dan_wobbly", "eve"]
-    assert list(table[0]) == ["student", "total", "max", "move_circle", "move_square", "move_circle.radius",
+    assert list(table[0]) == ["student", "name", "total", "max", "move_circle", "move_square", "move_circle.radius",
                               "move_circle.speed_limit", "move_circle.stops", "move_square.closes",
                               "move_square.corners", "status", "message"]
     assert table[0]["total"] == "14.5" and table[3]["move_circle.radius"] == "1.5"
@@ -107,7 +108,7 @@ def test_resume_after_ctrl_c_grades_only_the_rest(grading, tmp_path, capsys):
 def test_task_ids_reach_every_student(grading, tmp_path):
     folder = make_students(tmp_path, ["ann"])
     run_batch(folder, Path("out"), jobs=1, task_ids=["move_square"])
-    assert list(rows(Path("out"))[0])[3:5] == ["move_square", "move_square.closes"]
+    assert list(rows(Path("out"))[0])[4:6] == ["move_square", "move_square.closes"]
 
 
 def test_missing_batch_folder_is_exit_2(grading, capsys):
@@ -124,3 +125,68 @@ def test_jobs_must_be_positive(grading, tmp_path):
     with pytest.raises(SystemExit) as exc:
         main(["batch", str(tmp_path), "--out", "out", "-j", "0"])
     assert exc.value.code == 2
+
+
+def test_without_task_the_tasks_most_submissions_hold_are_chosen_once_and_printed(grading, tmp_path, capsys):
+    folder = make_students(tmp_path, ["ann", "ben", "cat"])
+    (folder / "ann" / "scripts" / "move_square.py").write_text("import rospy\n")
+    assert main(["batch", str(folder), "--out", "out", "-j", "2"]) == 0
+    err = capsys.readouterr().err
+    assert "Tasks: move_circle (found in most submissions: move_circle (3/3); left out: move_square (1)" in err
+    assert {r["max"] for r in rows(Path("out"))} == {"10.0"}
+
+
+def test_a_resumed_batch_keeps_the_task_set_of_its_first_run(grading, tmp_path, capsys):
+    folder = make_students(tmp_path, ["ann"])
+    main(["batch", str(folder), "--out", "out", "--task", "move_circle", "--task", "move_square"])
+    for name in ("ben", "cat"):
+        (folder / name).mkdir()
+    assert main(["batch", str(folder), "--out", "out"]) == 0
+    assert "as in this folder's first run" in capsys.readouterr().err
+    assert {r["max"] for r in rows(Path("out"))} == {"20.0"}
+
+
+def test_a_submission_that_could_not_be_graded_counts_as_zero_of_the_class_maximum(grading, tmp_path, capsys):
+    folder = make_students(tmp_path, ["ann", "bob_crash"])
+    main(["batch", str(folder), "--out", "out", "--task", "move_circle", "--task", "move_square"])
+    table = {r["student"]: r for r in rows(Path("out"))}
+    assert (table["bob_crash"]["total"], table["bob_crash"]["max"]) == ("0.0", "20.0")
+    assert table["bob_crash"]["move_circle"] == "0.0"
+    summary = Path("out/summary.md").read_text()
+    assert "mean 36.2 %" in summary and "min 0.0 %" in summary  # (14.5 / 20 + 0) / 2
+
+
+def test_a_second_batch_on_the_same_folder_is_refused(grading, tmp_path, capsys):
+    from grader.outfolder import OutputLock
+
+    folder = make_students(tmp_path, ["ann"])
+    Path("out").mkdir()
+    with OutputLock(Path("out")):
+        assert main(["batch", str(folder), "--out", "out"]) == 2
+    assert "another rosgrade batch (pid " in capsys.readouterr().err
+    assert not Path("out/grades.csv").exists()
+    assert main(["batch", str(folder), "--out", "out"]) == 0  # released: the next batch runs
+
+
+def test_an_output_folder_that_cannot_be_written_stops_before_grading(grading, tmp_path, capsys):
+    folder = make_students(tmp_path, ["ann"])
+    Path("blocked").write_text("a file where the output folder should be")
+    assert main(["batch", str(folder), "--out", "blocked/out"]) == 2
+    assert "could not write blocked/out" in capsys.readouterr().err
+    assert calls(grading) == []
+
+
+def test_moodle_canvas_and_plain_layouts_give_names_to_grades_csv(grading, tmp_path, capsys):
+    folder = tmp_path / "submissions"
+    moodle = folder / "Jane Doe_4242_assignsubmission_file_"
+    moodle.mkdir(parents=True)
+    with zipfile.ZipFile(moodle / "my_package.zip", "w") as archive:
+        archive.writestr("pkg/scripts/move_circle.py", "import rospy\n")
+    (folder / "smithalex_late_77_1001_move_circle.py").write_text("import rospy\n")
+    (folder / "plain_student" / "scripts").mkdir(parents=True)
+    (folder / "plain_student" / "scripts" / "move_circle.py").write_text("import rospy\n")
+    assert main(["batch", str(folder), "--out", "out"]) == 0
+    table = {r["student"]: r for r in rows(Path("out"))}
+    assert {k: v["name"] for k, v in table.items()} == {
+        "Jane_Doe_4242": "Jane Doe", "smithalex_77": "smithalex", "plain_student": "plain_student"}
+    assert {r["status"] for r in table.values()} == {"graded"}

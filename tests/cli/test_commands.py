@@ -1,6 +1,7 @@
 """`rosgrade tasks`, `score`, `bench` and `gradescope-package`."""
 from __future__ import annotations
 
+import importlib
 import io
 import json
 import tarfile
@@ -19,7 +20,7 @@ from .validators import validate_gradescope
 def test_tasks_lists_rubrics_with_points_and_criteria(grading, capsys):
     assert main(["tasks"]) == 0
     out = capsys.readouterr().out
-    assert "move_circle" in out and "radius: Circle radius (4)" in out and "[hidden]" in out
+    assert "move_circle" in out and "Circle radius (4)" in out and "[hidden]" in out
 
 
 def test_tasks_json(grading, capsys):
@@ -63,14 +64,15 @@ def test_score_two_recordings_of_one_scenario_is_exit_2(grading, capsys):
 def bench_module() -> types.ModuleType:
     module = types.ModuleType("sim.bench")
     module.physics_benchmark = lambda robot="turtlebot3_waffle", sim_seconds=60.0: {
-        "robot": robot, "sim_seconds": sim_seconds, "real_time_factor": 184.2, "raw_steps_per_s": 185000.0}
+        "robot": robot, "sim_seconds": sim_seconds, "rtf": 184.2, "cpu_rtf": 200.0,
+        "raw_steps_per_s": 185000.0}
     return module
 
 
 def runtime_bench_module(calls: list) -> types.ModuleType:
     module = types.ModuleType("grader.runtime.bench")
 
-    def runtime_benchmark(move_circle=None):
+    def runtime_benchmark(move_circle=None, repeats=3):
         calls.append(move_circle)
         return {"sim_seconds": 40.0, "move_circle_wall_s_median": 0.48, "busy_loop_sim_s_per_wall_s": 34.2}
 
@@ -84,22 +86,62 @@ def test_bench_prints_physics_and_node_run_figures(grading, monkeypatch, capsys)
     fakes.install(monkeypatch, "grader.runtime.bench", runtime_bench_module(calls))
     assert main(["bench", "--seconds", "5"]) == 0
     out = capsys.readouterr().out
-    assert "real_time_factor" in out and "busy_loop_sim_s_per_wall_s" in out
+    assert "rtf" in out and "busy_loop_sim_s_per_wall_s" in out
     assert calls == [None]
 
 
-def test_bench_times_reference_solutions(grading, monkeypatch, tmp_path, capsys):
+def check_bench_module(calls: list) -> types.ModuleType:
+    """The real check_bench figures, with the timed checks replaced by fixed ones."""
+    real = importlib.import_module("grader.check_bench")
+    module = types.ModuleType("grader.check_bench")
+    module.load_average = lambda: "0.10 0.20 0.30"
+
+    def best_of(submission, jobs, repeats):
+        calls.append((submission, jobs, repeats))
+        stages = {"node start-up": 2.0, "physics and sensors": 3.0, "plots": 1.0}
+        return real.CheckTiming(jobs, 8.0 / jobs, 7.5, 920.0, 10, 4000, stages, 30.0, 30.0)
+
+    module.best_of = best_of
+    return module
+
+
+def test_bench_times_a_whole_check_at_j1_and_jn(grading, monkeypatch, tmp_path, capsys):
     calls: list = []
+    checks: list = []
     fakes.install(monkeypatch, "sim.bench", bench_module())
     fakes.install(monkeypatch, "grader.runtime.bench", runtime_bench_module(calls))
+    fakes.install(monkeypatch, "grader.check_bench", check_bench_module(checks))
     (tmp_path / "refs").mkdir()
     (tmp_path / "refs" / "move_circle.py").write_text("import rospy\n")
-    assert main(["bench", "--reference", str(tmp_path / "refs"), "--json"]) == 0
+    assert main(["bench", "--reference", str(tmp_path / "refs"), "-j", "2", "--repeats", "2", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["physics"]["real_time_factor"] == 184.2
-    assert data["runtime"]["move_circle_wall_s_median"] == 0.48
+    assert data["physics"]["rtf"] == 184.2 and data["runtime"]["move_circle_wall_s_median"] == 0.48
     assert calls == [tmp_path / "refs" / "move_circle.py"]
-    assert data["reference"][0]["solution"] == "move_circle.py" and data["reference"][0]["wall_s"] >= 0
+    assert checks == [(tmp_path / "refs", 1, 2), (tmp_path / "refs", 2, 2)]
+    single, double = data["check"]
+    assert single["sim_s_per_wall_s"] == 115.0 and single["of_physics_rtf"] == round(115.0 / 184.2, 3)
+    assert double["wall_s"] == 4.0 and double["of_physics_rtf"] == round(230.0 / 184.2, 3)
+    # per CPU second, against physics per CPU second: 920 sim-s in 7.5 CPU-s against 200x
+    assert single["of_physics_cpu_rtf"] == round(920.0 / 7.5 / 200.0, 3)
+    # the -j 1 stages add up to its wall time: what no stage holds is "other"
+    assert sum(single["stages_s"].values()) == pytest.approx(8.0)
+    assert data["load_average_before"] == "0.10 0.20 0.30"
+
+
+def test_bench_prints_the_stage_table_and_the_physics_ratio(grading, monkeypatch, tmp_path, capsys):
+    fakes.install(monkeypatch, "sim.bench", bench_module())
+    fakes.install(monkeypatch, "grader.check_bench", check_bench_module([]))
+    (tmp_path / "refs").mkdir()
+    assert main(["bench", "--reference", str(tmp_path / "refs"), "-j", "1", "--no-node-runs"]) == 0
+    out = capsys.readouterr().out
+    assert "node start-up" in out and "physics and sensors" in out and "Of physics RTF" in out
+    assert "0.62" in out  # 115 sim-s per wall-s against 184.2x
+
+
+def test_bench_reference_that_does_not_exist_is_exit_2(grading, monkeypatch, capsys):
+    fakes.install(monkeypatch, "sim.bench", bench_module())
+    assert main(["bench", "--reference", "nowhere", "--no-node-runs"]) == 2
+    assert "nowhere does not exist" in capsys.readouterr().err
 
 
 def test_gradescope_package_has_setup_run_autograder_and_sdist(grading, capsys):
@@ -116,7 +158,7 @@ def test_gradescope_package_has_setup_run_autograder_and_sdist(grading, capsys):
         fallback = run.split("<<'JSON'\n")[1].split("\nJSON\n")[0]
         validate_gradescope(fallback)
         sdist = next(n for n in names if n.endswith(".tar.gz"))
-        assert f"pip install /autograder/source/{sdist}" in setup
+        assert f"pip install --no-cache-dir /autograder/source/{sdist}" in setup
         with tarfile.open(fileobj=io.BytesIO(archive.read(sdist))) as tar:
             members = tar.getnames()
     assert "rosgrade-0.1.0/pyproject.toml" in members and "rosgrade-0.1.0/grader/cli.py" in members

@@ -47,7 +47,7 @@ def test_gradescope_failure_file_validates():
 def test_gradescope_placeholder_exists_while_grading(grading, submission, monkeypatch, capsys):
     seen: list[dict] = []
 
-    def grade(sub, out, tasks=None):
+    def grade(sub, out, tasks=None, rubrics=None, jobs=1):
         seen.append(validate_gradescope(Path("results.json").read_text()))
         return fakes.make_report(str(sub))
 
@@ -63,19 +63,32 @@ def test_gradescope_file_is_valid_on_input_errors(grading, capsys):
     assert "no such file" in validate_gradescope(Path("results.json").read_text())["output"]
 
 
-def test_github_result_statuses_agree_with_scores():
+def test_github_result_tests_are_equal_units_passed_exactly_when_scored():
     report = fakes.make_report(radius_ok=False)
     result = validate_github_result(github.runner_result(report))
-    criteria = [c for t in report.tasks for c in t.criteria]
-    assert [t["status"] for t in result["tests"]] == ["pass" if c.score == c.max_score else "fail" for c in criteria]
-    assert [t["score"] for t in result["tests"]] == [c.score for c in criteria]
+    unit = github.point_unit(report)
+    assert {t["score"] for t in result["tests"] if t["status"] == "pass"} == {unit}
+    assert {t["score"] for t in result["tests"] if t["status"] != "pass"} == {0.0}
     assert result["status"] == "fail"
 
 
-def test_github_classroom_total_equals_report_score():
-    report = fakes.make_report()
+def test_github_log_and_classroom_points_agree_with_partial_credit():
+    report = fakes.make_report()  # 14.5 / 20 with a criterion at 2.5 / 5
     result = github.runner_result(report)
-    assert sum(t["score"] for t in result["tests"]) == report.score and result["max_score"] == report.max_score
+    assert github.classroom_points(result) == (report.score, report.max_score)
+    assert github.log_points(result) == report.score
+
+
+def test_github_points_round_to_the_unit_when_scores_are_odd():
+    report = fakes.make_report()
+    report.tasks[0].criteria[0].score = 3.297
+    report.tasks[0].score = sum(c.score for c in report.tasks[0].criteria)
+    report = report.total()
+    result = github.runner_result(report)
+    points, maximum = github.classroom_points(result)
+    assert points == github.log_points(result) and maximum == report.max_score
+    criteria = sum(len(t.criteria) for t in report.tasks)
+    assert abs(points - report.score) <= criteria * github.point_unit(report) / 2 + 1e-9
 
 
 def test_github_hidden_criterion_feedback_is_withheld():
@@ -89,7 +102,7 @@ def test_github_output_and_summary_go_to_the_actions_files(grading, submission, 
     monkeypatch.setenv("GITHUB_STEP_SUMMARY", str(tmp_path / "gh_summary"))
     assert main(["check", str(submission), "--out", "out", "--github-summary", "--github-result"]) == 0
     result = decode_github_output((tmp_path / "gh_output").read_text())
-    assert len(result["tests"]) == 5
+    assert github.log_points(result) == github.classroom_points(result)[0] == 14.5
     summary = (tmp_path / "gh_summary").read_text()
     assert "| ✅ | Stays within speed limits | 3 / 3 |" in summary and "artifact" in summary
 
@@ -106,7 +119,7 @@ def test_github_workflow_example_wires_the_reporter():
     job = workflow["jobs"]["run-autograding-tests"]
     grade = next(s for s in job["steps"] if s.get("id") == "rosgrade")
     reporter = next(s for s in job["steps"] if "grading-reporter" in s.get("uses", ""))
-    assert "--github-result" in grade["run"] and reporter["with"]["runners"] == "rosgrade"
+    assert "--github-result" in grade["run"] and "--task" in grade["run"] and reporter["with"]["runners"] == "rosgrade"
     assert reporter["env"]["ROSGRADE_RESULTS"] == "${{ steps.rosgrade.outputs.result }}"
 
 

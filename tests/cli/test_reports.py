@@ -6,9 +6,11 @@ from pathlib import Path
 import numpy as np
 
 from grader.reports.html import render_html
-from grader.reports.markdown import cell, render_markdown
+from grader.reports.escape import markdown_cell
+from grader.reports.markdown import render_markdown
+from grader.reports.measured import describe
 from grader.reports.plots import Plot, fit_circle_centre, printed_positions, shape_for, task_plots
-from grader.reports.text import fmt_number, measured_text
+from grader.reports.text import fmt_number, fmt_points
 
 from . import fakes
 
@@ -17,13 +19,43 @@ def test_numbers_are_short():
     assert [fmt_number(v) for v in (0.49712, 4.0, 12, True, None, 1e-6)] == ["0.497", "4", "12", "yes", "–", "1e-06"]
 
 
-def test_measured_values_pair_with_expected_and_show_units():
-    text = measured_text({"radius_m": 0.497, "expected_radius_m": 0.5, "max_linear_mps": 0.1, "corner_deg": 91.0})
-    assert text == "radius 0.497 m (expected 0.5 m), max linear 0.1 m/s, corner 91°"
+def test_points_are_rounded_for_people():
+    assert [fmt_points(15.297, 16), fmt_points(0.04, 1), fmt_points(0, 2), fmt_points(7.999, 8)] == [
+        "15.3 / 16", "0.04 / 1", "0 / 2", "8 / 8"]
+
+
+def test_measured_shows_the_criterions_quantity_and_its_companions_in_words():
+    text = describe({"radius": 0.9998, "cmd_radius": 1.0, "cmd_linear": 0.2, "cmd_angular": 0.2,
+                     "revolutions": 0.6, "arc_length": 3.77, "swapped_radius": 1.0, "rms_residual": 1e-16})
+    assert text == "circle radius 1 m; your commands give v/ω = 0.2/0.2 = 1 m; 0.6 laps, 3.77 m driven"
+
+
+def test_measured_hides_internal_counters_and_shows_limits_with_units():
+    text = describe({"violating_fraction": 0.995, "n_messages": 201, "n_violations": 200, "n_nonfinite": 0,
+                     "n_off_axis": 0, "max_linear": 0.5, "max_angular": 1.0, "limit_linear": 0.26,
+                     "limit_angular": 1.82})
+    assert text == ("200 of 201 commands over the limits; fastest linear.x 0.5 m/s (limit 0.26 m/s); "
+                    "fastest angular.z 1 rad/s (limit 1.82 rad/s)")
+    assert "nonfinite" not in text and "off axis" not in text
+
+
+def test_measured_skips_values_that_were_not_measured():
+    assert describe({"rest_time": float("nan"), "zero_command_delay": None, "moving_at_end": True}) == (
+        "still moving when the recording ended")
+    assert "n/a" not in describe({"final_x": None, "final_distance": float("nan")})
+
+
+def test_measured_collapses_a_range_whose_ends_are_equal():
+    assert describe({"side_mean": 1.02, "side_min": 1.02, "side_max": 1.02}) == "sides 1.02 m long"
+    assert describe({"side_mean": 1.0, "side_min": 0.98, "side_max": 1.02}) == "sides 0.98–1.02 m long"
+
+
+def test_unknown_quantities_of_new_metrics_are_shown_by_name_and_unit():
+    assert describe({"spiral_pitch_m": 0.25, "other": 3}) == "spiral pitch 0.25 m"
 
 
 def test_markdown_cells_escape_pipes_and_newlines():
-    assert cell("a | b\nc") == "a \\| b<br>c"
+    assert markdown_cell("a | b\nc") == "a \\| b<br>c"
 
 
 def test_markdown_warns_about_tasks_that_were_not_graded():

@@ -313,4 +313,111 @@ CASES = [
     ), stderr_empty=True),
 ]
 
+# Issue 9, rospy fidelity round 2 (items 1-4, 7-9): each probe is named for what it pins.
+_THREAD_LINES = tuple("thread %d t=%.3f" % (i, i / 10) for i in range(12))
+CASES += [
+    Case("p20_connections", "p20_connections.py", duration=3.0, compare_commands=True,
+         # real rospy connects 49-91 ms after the publisher is created (one or two 100 ms waits; ours: one)
+         tolerance_s=0.11, stdout=(
+             "cmd_vel publisher connections at creation 0",
+             "unsubscribed publisher connections at creation 0",
+             "waited at least one rate period for the robot to connect True",
+             "published once",
+             "cmd_vel publisher connections 1",
+             "unsubscribed publisher connections after 1 s 0",
+             "odom subscriber connections 1",
+             "unpublished subscriber connections 0",
+         ), stderr_empty=True),
+    Case("p21_latch", "p21_latch.py", duration=4.0, compare_commands=True,
+         # the robot's connection (and so the latched message) came 0-60 ms after the publisher in real runs
+         tolerance_s=0.07, stdout=(
+             "published one latched Twist right after creating the publisher",
+             "wait_for_message on the latched topic got second",
+             "wait_for_message on the plain topic !! timeout exceeded while waiting for message on topic /p21_plain",
+             "late subscriber got ['second']",
+             "cmd_vel connections 1",
+         ), stderr_empty=True),
+    Case("p22_thread_spin_rate", "p22_thread.py", ("spin_rate",), shutdown_at=2.0, duration=4.0,
+         compare_commands=True, stdout=(*_THREAD_LINES, "thread done True", "main done"), stderr_empty=True),
+    Case("p22_thread_sleep_rospy", "p22_thread.py", ("sleep_rospy",), shutdown_at=2.0, duration=4.0,
+         compare_commands=True, stdout=(*_THREAD_LINES[:10], "main woke t=1.000", *_THREAD_LINES[10:],
+                                        "thread done True", "main done"), stderr_empty=True),
+    # time.sleep is wall time in real rospy: 12 sleeps of 0.1 s drift a few ms against the 10 ms clock
+    Case("p22_thread_spin_time", "p22_thread.py", ("spin_time",), shutdown_at=2.0, duration=4.0,
+         compare_commands=True, tolerance_s=0.02, stdout=(*_THREAD_LINES, "thread done True", "main done"),
+         stderr_empty=True),
+    # callbacks run during init_node: logging is set up (wall time only: no ROS clock yet), time is not
+    Case("p23_init_node", "p23_init_node.py", duration=3.0, compare_commands=True, tolerance_s=0.02, stdout=(
+        "[INFO] [<wall>]: a log line from a callback during init_node",
+        "callbacks ran before init_node returned True",
+        f"rospy time in a callback during init_node !! {INIT_ERR}",
+        "publisher created before init_node has connections 1",
+        "callbacks after init_node True",
+    ), stderr=(
+        "[ERROR] [<wall>]: bad callback: <function on_tf at 0xADDR>",
+        "Traceback (most recent call last):",
+        "  <library frames>",
+        '  File "<probe>/p23_init_node.py", line 26, in on_tf',
+        "    rospy.Time.now()  # raises: rospy reports it as a bad callback",
+        "  <library frames>",
+        INIT_ERR,
+    )),
+    Case("p24_values", "p24_values.py", duration=3.0, compare_commands=True, stdout=(
+        "Time(0, 5e8) 0 500000000 int",
+        "Duration(1, 2.5e8) 1 250000000 int",
+        "published a header stamped Time(0, 5e8)",
+        "published numpy scalar and 1-element array values",
+        "bad value on an unsubscribed topic: no error",
+        "stamp received [(0, 500000000)]",
+        "bad value on /cmd_vel !! ROSSerializationException: field linear.x must be float type",
+    ), stderr_empty=True),
+    Case("p25_shared_subscribers", "p25_shared_subscribers.py", duration=4.0, stdout=(
+        "callbacks interleave A,B,A,B True",
+        "fast subscriber paced by the slow one True",
+        "both called as often True",
+        "sys.exit() callback kept being called True",
+        "connections 1 1",
+    ), stderr_empty=True),
+    Case("p26_params", "p26_params.py", duration=2.0, stdout=(
+        "use_sim_time before init_node True",
+        "tuple reads back as [1, 2.5, 'x'] list",
+        "nested tuple reads back as {'a': [1, 2]}",
+        "set_param(None) !! builtins.TypeError: cannot marshal None unless allow_none is enabled",
+        "has ~none False",
+    ), stderr_empty=True),
+    Case("p_eco_modules", "p_eco_modules.py", duration=6.0, stdout=(
+        "lookup odom base_footprint matches /odom True stamp True",
+        "latest stamped True",
+        "can_transform 1",
+        "can_transform unknown 0",
+        'LookupException True "nope" passed to lookupTransform argument source_frame does not exist. ',
+        "ExtrapolationException True",
+        "own frame probe_static 0.5",
+        "own frame probe_moving 0.25",
+        "synchronised about 30 in 1 s True",
+        "cache holds 5 latest is last True",
+        "load_manifest unknown ResourceNotFound no_such_package_here",
+        "GetPlan nav_msgs/GetPlan 421c8ea4d21c6c9db7054b4bbdf1e024 6cdd0a18e0aff5b0a3ca2326a89b54ff 0.0",
+        "published True True True",
+        "remap_name chatter cached True",
+        "SubscribeListener ['peer_subscribe', 'peer_unsubscribe']",
+    ), stderr_empty=True),
+    Case("p_eco_transformations", "p_eco_transformations.py", duration=2.0, stdout=(
+        "decompose_matrix [[1.0, 2.0, 3.0], [0.1, 0.2, 0.3], [0.4, -0.5, 0.6], [1.5, -2.5, 3.5], [0.0, 0.0, 0.0, 1.0]]",
+        "reflection_from_matrix rebuilds True",
+        "rotation_from_matrix rebuilds True",
+        "scale_from_matrix rebuilds True",
+        "projection_from_matrix rebuilds True",
+        "shear_from_matrix angle 0.4",
+        "arcball_map_to_sphere [0.25, 0.21875, 0.943211767]",
+        "decompose_matrix singular !! Matrix is singular",
+    ), stderr_empty=True),
+    Case("p_eco_sensors", "p_eco_sensors.py", duration=4.0, stdout=(
+        "imu imu_link unit 1.0 9.81 covariances zero True",
+        "joint_states ['wheel_left_joint', 'wheel_right_joint'] 2 0 0 ''",
+        "scan base_scan 360 0.0 6.28319 0.017502 0.12 3.5 360 all inf True 0.0 0.0",
+        "rates about 200, 30, 5 Hz True True True",
+    ), stderr_empty=True),
+]
+
 CASES_BY_ID = {case.id: case for case in CASES}

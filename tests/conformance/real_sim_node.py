@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """A minimal Gazebo stand-in for the real-ROS side of the conformance suite (runs under Debian's /usr/bin/python3).
 
-It publishes /clock every 10 ms of sim time paced at 1x wall time, and /odom (nav_msgs/Odometry) and /tf at 30 Hz from
-a kinematic unicycle that integrates the last /cmd_vel. It is driven by the harness (real_ros.py) over stdin/stdout:
+It publishes /clock every 10 ms of sim time paced at 1x wall time, and /odom (nav_msgs/Odometry), /tf and /joint_states
+at 30 Hz from a kinematic unicycle that integrates the last /cmd_vel, /imu at 200 Hz and an empty world's /scan
+(all inf) at 5 Hz, as the TurtleBot3's Gazebo plugins fill them. It is driven by the harness (real_ros.py) over stdin/stdout:
 
 stdin  ``watch <id> <pid> <shutdown_s|-> <end_s>``: the next new subscriber of /clock is that probe; its first clock
        tick is its time origin; SIGINT the pid at origin + shutdown_s; report ``end`` at origin + end_s.
@@ -24,11 +25,15 @@ import rospy
 from geometry_msgs.msg import TransformStamped, Twist
 from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import Imu, JointState, LaserScan
 from tf2_msgs.msg import TFMessage
 
 CLOCK_NS = 10_000_000
-ODOM_HZ = 30
+ODOM_HZ = 30  # also /joint_states, as gazebo_ros_diff_drive publishes them
+IMU_HZ = 200
+SCAN_HZ = 5
 NS = 1_000_000_000
+WHEEL_RADIUS, WHEEL_SEPARATION = 0.033, 0.287  # TurtleBot3 Waffle
 
 _out_lock = threading.Lock()
 
@@ -45,6 +50,7 @@ class Sim:
         self.clock_ns = 0            # last /clock value published
         self.cmd = (0.0, 0.0)        # vx, wz
         self.x = self.y = self.yaw = 0.0
+        self.wheels = [0.0, 0.0]  # left, right joint angles
         self.integrated_ns = start_ns
         self.seq = 0
         self.watch: dict | None = None
@@ -65,6 +71,8 @@ class Sim:
         if dt <= 0:
             return
         vx, wz = self.cmd
+        self.wheels[0] += (vx - wz * WHEEL_SEPARATION / 2) / WHEEL_RADIUS * dt
+        self.wheels[1] += (vx + wz * WHEEL_SEPARATION / 2) / WHEEL_RADIUS * dt
         if abs(wz) < 1e-12:
             self.x += vx * dt * math.cos(self.yaw)
             self.y += vx * dt * math.sin(self.yaw)
@@ -94,14 +102,15 @@ class Sim:
                 return
 
     # ---- the paced loop ------------------------------------------------------------------------------------
-    def run(self, start_ns: int, clock_pub, odom_pub, tf_pub) -> None:
+    def run(self, start_ns: int, clock_pub, odom_pub, tf_pub, sensor_pubs) -> None:
         next_clock = start_ns
-        k_odom = -(-start_ns * ODOM_HZ // NS)  # first 30 Hz tick at or after start
+        # the next tick of each rate at or after start
+        k_odom, k_imu, k_scan = (-(-start_ns * hz // NS) for hz in (ODOM_HZ, IMU_HZ, SCAN_HZ))
         wall0 = time.monotonic()
         emit(ev="ready", t_ns=start_ns)
         while not rospy.is_shutdown():
-            t_odom = k_odom * NS // ODOM_HZ
-            t = min(next_clock, t_odom)
+            t_odom, t_imu, t_scan = k_odom * NS // ODOM_HZ, k_imu * NS // IMU_HZ, k_scan * NS // SCAN_HZ
+            t = min(next_clock, t_odom, t_imu, t_scan)
             delay = wall0 + (t - start_ns) / NS - time.monotonic()
             if delay > 0:
                 time.sleep(delay)
@@ -114,7 +123,14 @@ class Sim:
                 next_clock += CLOCK_NS
             if t == t_odom:
                 self.publish_odom(t, odom_pub, tf_pub)
+                self.publish_joints(t, sensor_pubs["joint_states"])
                 k_odom += 1
+            if t == t_imu:
+                self.publish_imu(t, sensor_pubs["imu"])
+                k_imu += 1
+            if t == t_scan:
+                self.publish_scan(t, sensor_pubs["scan"])
+                k_scan += 1
 
     def before_clock(self, t: int, clock_pub) -> None:
         conns = {id(c) for c in list(clock_pub.impl.connections or ())}
@@ -172,6 +188,32 @@ class Sim:
         tf_pub.publish(TFMessage(transforms=[tr]))
 
 
+    def publish_imu(self, t: int, pub) -> None:
+        with self.lock:
+            self.integrate(t)
+            yaw, wz = self.yaw, self.cmd[1]
+        msg = Imu()
+        msg.header.stamp, msg.header.frame_id = genpy.Time(0, t), "imu_link"
+        msg.orientation.z, msg.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
+        msg.angular_velocity.z = wz
+        msg.linear_acceleration.z = 9.81
+        pub.publish(msg)
+
+    def publish_joints(self, t: int, pub) -> None:
+        with self.lock:
+            self.integrate(t)
+            wheels = list(self.wheels)
+        msg = JointState(name=["wheel_left_joint", "wheel_right_joint"], position=wheels)
+        msg.header.stamp = genpy.Time(0, t)
+        pub.publish(msg)
+
+    def publish_scan(self, t: int, pub) -> None:
+        msg = LaserScan(angle_min=0.0, angle_max=6.28319, angle_increment=6.28319 / 359, range_min=0.12,
+                        range_max=3.5, ranges=[math.inf] * 360, intensities=[0.0] * 360)
+        msg.header.stamp, msg.header.frame_id = genpy.Time(0, t), "base_scan"
+        pub.publish(msg)
+
+
 def main() -> None:
     start_ns = int(round(float(sys.argv[1]) * NS)) if len(sys.argv) > 1 else NS
     # Our own time is the wall clock: this node must not subscribe to the /clock it publishes.
@@ -180,10 +222,13 @@ def main() -> None:
     clock_pub = rospy.Publisher("/clock", Clock, queue_size=10)
     odom_pub = rospy.Publisher("/odom", Odometry, queue_size=10)
     tf_pub = rospy.Publisher("/tf", TFMessage, queue_size=10)
+    sensor_pubs = {"imu": rospy.Publisher("/imu", Imu, queue_size=10),
+                   "joint_states": rospy.Publisher("/joint_states", JointState, queue_size=10),
+                   "scan": rospy.Publisher("/scan", LaserScan, queue_size=10)}
     rospy.Subscriber("/cmd_vel", Twist, sim.on_cmd, queue_size=100)
     threading.Thread(target=sim.control, daemon=True).start()
     try:
-        sim.run(start_ns, clock_pub, odom_pub, tf_pub)
+        sim.run(start_ns, clock_pub, odom_pub, tf_pub, sensor_pubs)
     except Exception as exc:  # noqa: BLE001 - reported to the harness, which fails the run
         emit(ev="error", message=f"{type(exc).__name__}: {exc}")
         raise

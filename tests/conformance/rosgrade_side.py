@@ -10,6 +10,9 @@ from pathlib import Path
 from real_ros import Command  # the same /cmd_vel record on both sides
 
 START_TIME_S = 2.0
+# The real side times Ctrl+C from the probe's first /clock, which comes as init_node returns; ours from the start of
+# the run, and init_node takes this long here (rospy.client.INIT_NODE_NS).
+INIT_NODE_S = 0.1
 
 
 @dataclass
@@ -45,7 +48,7 @@ def run_ours(probe: Path, args: tuple[str, ...] = (), *, shutdown_at: float | No
     accepted = {f.name for f in dataclasses.fields(RunSpec)}
     spec = RunSpec(
         scenario=Scenario(robot="turtlebot3_waffle", start_time=START_TIME_S, duration=duration,
-                          shutdown_at=shutdown_at),
+                          shutdown_at=None if shutdown_at is None else shutdown_at + INIT_NODE_S),
         nodes=(NodeSpec(script=Path(probe).resolve(), args=tuple(args), ros_namespace=ros_namespace),),
         **{k: v for k, v in options.items() if k in accepted},
     )

@@ -58,9 +58,10 @@ class Run:
 
 @dataclass
 class FakeGrader:
-    """Answers every WAIT with ADVANCE to the wake time (or an earlier scripted delivery / shutdown).
+    """Answers every WAIT with a BATCH at the wake time (or an earlier scripted delivery / shutdown).
 
-    The clock is the last multiple of ``TICK``, and 0 in every ADVANCE that answers a WAIT sent before INIT.
+    The clock is the last multiple of ``TICK``, and 0 in every BATCH that answers a WAIT sent before INIT. Every
+    publisher and subscriber counts one connection from the first BATCH after it registered.
     """
 
     probe: str
@@ -104,6 +105,7 @@ class FakeGrader:
         inited = False
         shutdown_sent = False
         subscribers: dict[str, list[int]] = {}
+        unconnected: list[int] = []
         pending = sorted(self.messages, key=lambda m: m[0])
         while True:
             try:
@@ -125,8 +127,10 @@ class FakeGrader:
                                                             "wall_epoch": self.wall_epoch}))
             elif kind == ch.INIT:
                 inited = True
-            elif kind == ch.SUBSCRIBE:
-                subscribers.setdefault(data["topic"], []).append(data["id"])
+            elif kind in (ch.ADVERTISE, ch.SUBSCRIBE):
+                unconnected.append(data["id"])
+                if kind == ch.SUBSCRIBE:
+                    subscribers.setdefault(data["topic"], []).append(data["id"])
             elif kind == ch.UNREGISTER:
                 for ids in subscribers.values():
                     if data["id"] in ids:
@@ -142,15 +146,17 @@ class FakeGrader:
                 if target > self.end_ns:
                     return
                 now = target
-                out = [ch.encode_json(ch.ADVANCE, {"t_ns": now, "clock_ns": now // TICK * TICK if inited else 0})]
+                advance = {"t_ns": now, "clock_ns": now // TICK * TICK if inited else 0,
+                           "connections": {str(ident): 1 for ident in unconnected}}
+                unconnected = []
+                deliveries = []
                 while pending and pending[0][0] <= now:
                     _, topic, body = pending.pop(0)
-                    out += [ch.encode_id_bytes(ch.DELIVER, ident, body) for ident in subscribers.get(topic, [])]
+                    deliveries += [(ident, body) for ident in subscribers.get(topic, [])]
                 if self.shutdown_ns is not None and not shutdown_sent and now >= self.shutdown_ns:
                     shutdown_sent = True
-                    out.append(ch.encode_json(ch.SHUTDOWN, {"reason": "ctrl-c"}))
-                out.append(ch.encode(ch.RESUME))
-                ch.write_all(wfd, b"".join(out))
+                    advance["shutdown"] = "ctrl-c"
+                ch.write_all(wfd, ch.encode_batch(advance, deliveries))
 
 
 def frames_as_json(run: Run) -> list:

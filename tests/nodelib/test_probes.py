@@ -16,13 +16,13 @@ def test_time_now_zero_then_clock_steps():
     assert lines[0] == "first 0 True"
     # no /clock yet: it arrives when the node first blocks (or has charged a clock period of calls)
     assert lines[1:4] == ["now 0"] * 3
-    # rospy.sleep(0.05) at time 0 first waits for the clock (tick 1.41), then sleeps to 1.46, as rospy does;
-    # time.time() moved with sim time from the start (1.403)
+    # init_node takes 0.1 s (to 1.503); rospy.sleep(0.05) at time 0 first waits for the clock (tick 1.51), then
+    # sleeps to 1.56, as rospy does; time.time() moved with sim time from after init_node (1.503)
     name, t_ns, wall_delta = lines[4].split()
-    assert int(t_ns) == 1_460_000_000 and abs(int(wall_delta) - 57_000_000) < 1000
+    assert int(t_ns) == 1_560_000_000 and abs(int(wall_delta) - 57_000_000) < 1000
     # patched time.sleep wakes at its exact nanosecond deadline
     assert lines[5] == "time_sleep_ns 12300000"
-    assert run.output(1).endswith("[INFO] [1700000001.472300, 1.470000]: done 7\n")
+    assert run.output(1).endswith("[INFO] [1700000001.572300, 1.570000]: done 7\n")
     log = run.of("LOG")[0].data
     assert (log["level"], log["msg"], log["name"], log["line"]) == (2, "done 7", "/timeprobe", 16)
     assert run.raw_stdout == b"" and run.raw_stderr == b""
@@ -33,29 +33,29 @@ def test_rate_two_publishes_at_start_then_100ms():
     assert run.returncode == 0, run.output(2)
     assert run.lines()[0] == "remaining0 100000000"
     times = [t for t, _ in run.published("/chatter")]
-    # world time 1.413 (clock 1.41) twice, then on the 100 ms grid of the clock
+    # init_node ends at 1.503; world time 1.61 twice, then on the 100 ms grid of the clock
     # real rospy's pattern: the first message goes out before the clock, then a Rate created at time 0 sends two
     # at the first tick after its sleep, then every 100 ms (checked against real rospy in tests/conformance)
-    assert times == [1_403_000_000, 1_510_000_000, 1_510_000_000, 1_610_000_000, 1_710_000_000]
+    assert times == [1_503_000_000, 1_610_000_000, 1_610_000_000, 1_710_000_000, 1_810_000_000]
     advertise = run.of("ADVERTISE")[0].data
     assert advertise == {"id": 1, "topic": "/chatter", "type": "std_msgs/String",
                          "md5sum": "992ce8a1687cec8c8bd883ec73ca41d1", "queue_size": 10, "latch": False}
 
 
 def test_busy_loop_advances_time_and_ends_at_shutdown():
-    run = FakeGrader("busy_shutdown.py", shutdown_ns=1_500_000_000).run()
+    run = FakeGrader("busy_shutdown.py", shutdown_ns=1_600_000_000).run()
     assert run.returncode == 0, run.output(2)
     pubs = run.published("/chatter")
     # each iteration is two charged calls (is_shutdown, publish): 5 publishes per 10 ms of sim time
     go = [t for t, body in pubs if body.endswith(b"go")]
-    assert go[:4] == [1_403_000_000] * 4 and go[4:9] == [1_413_000_000] * 5 and go[9] == 1_423_000_000
+    assert go[:4] == [1_503_000_000] * 4 and go[4:9] == [1_513_000_000] * 5 and go[9] == 1_523_000_000
     waits = [f.data["wake_ns"] - f.t_ns for f in run.of("WAIT")[1:]]
     assert set(waits) == {10_000_000}
     # the hook's publish is the last message; the one after the loop is dropped
-    assert pubs[-1] == (1_500_000_000, b"\x04\x00\x00\x00stop")
+    assert pubs[-1] == (1_600_000_000, b"\x04\x00\x00\x00stop")
     # the last iteration's publish was interrupted by the shutdown (it yielded first) and dropped
-    assert run.lines() == ["hook is_shutdown False", "loops %d 1500000000" % (len(go) + 1)]
-    assert run.of("UNREGISTER")[0].t_ns == 1_500_000_000
+    assert run.lines() == ["hook is_shutdown False", "loops %d 1600000000" % (len(go) + 1)]
+    assert run.of("UNREGISTER")[0].t_ns == 1_600_000_000
 
 
 def test_pure_busy_wait_and_library_busy_wait_see_callbacks():
@@ -126,6 +126,6 @@ def test_api_errors_params_names_and_wait_for_message_timeout():
     # created before init_node, the publisher was resolved without the remapping (as rospy does)
     assert "names /api / /cmd_vel 1\n" in out
     # 0.5 s after the call at world time 1.403; the clock reads the last tick, 1.90
-    assert "wfm: timeout exceeded while waiting for message on topic /nothing 1.9\n" in out
+    assert "wfm: timeout exceeded while waiting for message on topic /nothing 2.0\n" in out
     assert "twice: rospy.init_node() has already been called with different arguments: ('api', [" in out
     assert len(run.published("/cmd_vel")) == 1

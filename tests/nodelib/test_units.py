@@ -92,6 +92,8 @@ def test_names_resolution_and_remapping(monkeypatch):
 def test_log_format_and_arguments():
     assert core.format_line(core.WARN, "x", 1795250908.5231134, 21.06) == \
         "[WARN] [1795250908.523113, 21.060000]: x\n"
+    # during init_node, before rospy has set up its clock, the line carries the wall time only
+    assert core.format_line(core.INFO, "x", 1795435121.856229, None) == "[INFO] [1795435121.856229]: x\n"
     assert core.format_message("x=%.2f y=%.2f", (1.23456, 2.0)) == "x=1.23 y=2.00"
     assert core.format_message("pct-args tuple %s", ((1, 2),)) == "pct-args tuple (1, 2)"
     assert core.format_message("literal 100% no args", ()) == "literal 100% no args"

@@ -77,13 +77,13 @@ def make_run(seconds: float = 2.0, seed: int = 7) -> Run:
         pose = ((x, y, 0.0), _quat(yaw))
         twist = ((0.25, -0.0, 0.0), (0.0, 0.0, 1.5))
         run.odometry.append(OdometrySample(t_ns, "/odom", "odom", BASE_FRAME, *pose, *twist, cov, twist_cov))
-        run.transforms.append(TransformSample(t_ns, "odom", BASE_FRAME, (x, y, 0.0), _quat(yaw)))
+        run.transforms.append(TransformSample(t_ns, "/tf", "odom", BASE_FRAME, (x, y, 0.0), _quat(yaw)))
     for i in range(int(seconds * 50)):
         t_ns = START_NS + i * 20_000_000
         yaw = math.atan2(math.sin(0.1 * i), math.cos(0.1 * i))
         run.ground_truth.append(
             GroundTruthSample(
-                t_ns, (float(rng.normal()), float(rng.normal()), 0.01), _quat(yaw), (0.2, 1e-17, 0.0), (0.0, 0.0, -0.7)
+                t_ns, "/ground_truth/odom", "world", BASE_FRAME, (float(rng.normal()), float(rng.normal()), 0.01), _quat(yaw), (0.2, 1e-17, 0.0), (0.0, 0.0, -0.7)
             )
         )
     for i in range(int(seconds * 10)):
@@ -108,7 +108,7 @@ def record(path: Path, run: Run, **kwargs: object) -> Path:
     for seq, s in enumerate(run.transforms):
         writes.append((s.t_ns, 1, "/tf", "tf2_msgs/TFMessage", tf_bytes(s, seq), "/gazebo"))
     for seq, s in enumerate(run.ground_truth):
-        payload = ground_truth_bytes(s, seq, child_frame_id=BASE_FRAME)
+        payload = ground_truth_bytes(s, seq)
         writes.append((s.t_ns, 2, "/ground_truth/odom", "nav_msgs/Odometry", payload, "/gazebo"))
     for c in run.commands:
         writes.append((c.t_ns, 3, c.topic, "geometry_msgs/Twist", twist_bytes(c.linear, c.angular), c.callerid))

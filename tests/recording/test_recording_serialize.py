@@ -4,6 +4,7 @@ from __future__ import annotations
 import math
 import struct
 
+import numpy as np
 import pytest
 
 from recording_helpers import BASE_FRAME, MessageBuilder, Run
@@ -13,13 +14,16 @@ from grader.recording import (
     decode_odometry_pose_twist,
     decode_twist,
     ground_truth_bytes,
+    imu_bytes,
+    joint_state_bytes,
+    laser_scan_bytes,
     log_bytes,
     odometry_bytes,
     string_bytes,
     tf_bytes,
     twist_bytes,
 )
-from sim.samples import OdometrySample
+from sim.samples import ImuSample, JointStateSample, OdometrySample, ScanSample
 
 
 def test_odometry_bytes_equal_rosbags(run: Run, ros1_msgs: MessageBuilder) -> None:
@@ -30,12 +34,43 @@ def test_odometry_bytes_equal_rosbags(run: Run, ros1_msgs: MessageBuilder) -> No
 def test_ground_truth_bytes_equal_rosbags(run: Run, ros1_msgs: MessageBuilder) -> None:
     for seq, sample in enumerate(run.ground_truth):
         expected = ros1_msgs.serialize(ros1_msgs.from_ground_truth_sample(sample, seq))
-        assert ground_truth_bytes(sample, seq, child_frame_id=BASE_FRAME) == expected
+        assert ground_truth_bytes(sample, seq) == expected
 
 
 def test_tf_bytes_equal_rosbags(run: Run, ros1_msgs: MessageBuilder) -> None:
     for seq, sample in enumerate(run.transforms):
         assert tf_bytes(sample, seq) == ros1_msgs.serialize(ros1_msgs.from_transform_sample(sample, seq))
+
+
+def test_imu_bytes_equal_rosbags(ros1_msgs: MessageBuilder) -> None:
+    sample = ImuSample(5_000_000_001, "/imu", "imu_link", (0.0, -0.0, 0.38, 0.92), (1e-300, 0.0, -1.82),
+                       (0.01, -0.2, 9.81))
+    t = ros1_msgs.t
+    zero = np.zeros(9)
+    expected = t["sensor_msgs/msg/Imu"](ros1_msgs.header(3, sample.t_ns, "imu_link"),
+                                         t["geometry_msgs/msg/Quaternion"](*sample.orientation), zero,
+                                         ros1_msgs.vector3(sample.angular_velocity), zero,
+                                         ros1_msgs.vector3(sample.linear_acceleration), zero)
+    assert imu_bytes(sample, 3) == ros1_msgs.serialize(expected)
+
+
+@pytest.mark.parametrize("velocities", [(), (1.5, -2.25, 0.0, 1e-9)])
+def test_joint_state_bytes_equal_rosbags(ros1_msgs: MessageBuilder, velocities: tuple[float, ...]) -> None:
+    names = ("front_left_wheel", "front_right_wheel", "rear_left_wheel", "rear_right_wheel")
+    sample = JointStateSample(7_000_000_000, "/joint_states", "", names, (0.5, -0.5, 0.5, 123.25), velocities)
+    expected = ros1_msgs.t["sensor_msgs/msg/JointState"](
+        ros1_msgs.header(0, sample.t_ns, ""), list(names), np.array(sample.positions), np.array(velocities),
+        np.zeros(0))
+    assert joint_state_bytes(sample, 0) == ros1_msgs.serialize(expected)
+
+
+def test_laser_scan_bytes_equal_rosbags(ros1_msgs: MessageBuilder) -> None:
+    ranges = tuple([math.inf] * 358 + [0.5, 3.5])
+    sample = ScanSample(9_200_000_000, "/scan", "base_scan", 0.0, 6.28319, 6.28319 / 359, 0.12, 3.5, ranges)
+    expected = ros1_msgs.t["sensor_msgs/msg/LaserScan"](
+        ros1_msgs.header(12, sample.t_ns, "base_scan"), 0.0, 6.28319, 6.28319 / 359, 0.0, 0.0, 0.12, 3.5,
+        np.array(ranges, dtype=np.float32), np.zeros(360, dtype=np.float32))
+    assert laser_scan_bytes(sample, 12) == ros1_msgs.serialize(expected)
 
 
 @pytest.mark.parametrize(
@@ -140,6 +175,7 @@ def _fields(sample: OdometrySample) -> dict[str, object]:
     return {name: getattr(sample, name) for name in OdometrySample.__slots__}
 
 
-def test_ground_truth_defaults_to_world_and_base_link(run: Run) -> None:
+def test_ground_truth_frames_come_from_the_sample(run: Run) -> None:
     data = ground_truth_bytes(run.ground_truth[0], 0)
-    assert data[12:34] == b"\x05\0\0\0world\x09\0\0\0base_link"
+    frame = BASE_FRAME.encode()
+    assert data[12:12 + 13 + len(frame)] == b"\x05\0\0\0world" + struct.pack("<I", len(frame)) + frame

@@ -59,7 +59,7 @@ def test_channel_per_topic_and_callerid_with_metadata(recorded: Path) -> None:
         ("/rosgrade/stdout", "/mover"), ("/rosgrade/stderr", "/mover"),
     }
     assert channels[("/cmd_vel", "/mover")].metadata == {
-        "callerid": "/mover", "md5sum": "9f195f881246fdfa2798d1d3eebca84a", "latching": "false",
+        "callerid": "/mover", "md5sum": "9f195f881246fdfa2798d1d3eebca84a", "latching": "0",
     }
     assert channels[("/odom", "/gazebo")].metadata["md5sum"] == "cd5e73d190d741a2f92e81eda573aca7"
     assert channels[("/tf", "/gazebo")].metadata["md5sum"] == "94810edda583a504dfda3829e70d7eec"
@@ -122,7 +122,7 @@ def test_latching_is_recorded(tmp_path: Path) -> None:
     with Recorder(tmp_path / "l.mcap", {}) as rec:
         rec.write("/map_ready", "std_msgs/Bool", b"\x01", 10, "/mapper", latching=True)
     channels = [r for r in _records(tmp_path / "l.mcap") if isinstance(r, Channel)]
-    assert channels[0].metadata["latching"] == "true"
+    assert channels[0].metadata["latching"] == "1"
 
 
 def test_add_metadata_after_messages(tmp_path: Path) -> None:

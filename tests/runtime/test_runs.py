@@ -43,6 +43,7 @@ DETERMINISM_CASES = {
                                           Scenario(duration=30.0, initial_pose=Pose2D(x=-2.0, y=-0.5, yaw=2.96706))),
     "busy publisher": (NODES / "busy_publisher.py", Scenario(duration=12.0)),
     "pure-Python busy wait": (NODES / "busy_wait_first_odom.py", Scenario(duration=5.0)),
+    "control loop in a student thread": (NODES / "thread_controller.py", Scenario(duration=6.0, shutdown_at=5.0)),
 }
 
 
@@ -79,9 +80,58 @@ def test_pure_busy_wait_ends_when_the_callback_sets_the_value(tmp_path):
     result, rec = run_node(tmp_path, NODES / "busy_wait_first_odom.py", Scenario(duration=5.0))
     assert result.nodes[0].exit_code == 0
     (t, _, text), = [line for line in rec.output_lines() if line[2].startswith("first odom")]
-    # The first /odom is due 33 ms after the start; the wait ends on the next clock tick after it.
-    assert t == pytest.approx(scenario_start() + 0.04) and abs(float(text.split("=")[1])) < 1e-9
+    # init_node takes 0.1 s; the next /odom is due 33 ms later and the wait ends on the next clock tick after it.
+    assert t == pytest.approx(scenario_start() + 0.14) and abs(float(text.split("=")[1])) < 1e-9
     assert rec.commands().wz.max() == pytest.approx(0.5)
+
+
+def test_student_thread_drives_the_robot_in_sim_time(tmp_path):
+    result, rec = run_node(tmp_path, NODES / "thread_controller.py", Scenario(duration=6.0, shutdown_at=5.0))
+    assert result.nodes[0].status == "exited" and result.nodes[0].exit_code == 0
+    commands = rec.commands()
+    moving = commands.t[commands.vx > 0]
+    # 10 Hz from the thread's Rate: 0.5 m at 0.2 m/s is about 25 commands, 0.1 s apart
+    assert 20 <= len(moving) <= 30 and np.allclose(np.diff(moving), 0.1, atol=0.011)
+    assert commands.vx[-1] == 0.0
+    assert 0.5 <= rec.ground_truth().x[-1] <= 0.6
+    assert any(text.startswith("stopped at x=0.5") for _, _, text in rec.output_lines())
+
+
+@pytest.mark.parametrize("kind", ["Lock", "RLock"])
+def test_a_lock_held_across_a_sleep_makes_the_others_wait_without_deadlock(tmp_path, kind):
+    """Locks, and the SimpleQueue a ThreadPoolExecutor's workers wait on, wait through the scheduler."""
+    result, rec = run_node(tmp_path, NODES / "lock_across_sleep.py", Scenario(duration=4.0), args=(kind,))
+    assert result.nodes[0].exit_code == 0, result.nodes[0].message
+    assert [text for _, stream, text in rec.output_lines() if stream == "stdout"] == [
+        "thread 5 main > 5 True odom > 20 True", "executor 42"]
+    assert result.wall_s < 3.0
+
+
+@pytest.mark.parametrize("script", ["latched_once.py", "connection_wait.py"])
+def test_a_single_command_drives_the_robot_when_latched_or_sent_once_connected(tmp_path, script):
+    """Issue 9 items 1-2: as on real ROS, one latched Twist published at once, or one sent after waiting for
+    get_num_connections(), reaches the robot, which then drives at 0.2 m/s until the end of the run."""
+    result, rec = run_node(tmp_path, NODES / script, Scenario(duration=3.0))
+    commands = rec.commands()
+    assert len(commands) == 1 and commands.vx[0] == pytest.approx(0.2)
+    assert commands.callerid[0] == "/" + script.removesuffix(".py")
+    assert rec.ground_truth().x[-1] - rec.ground_truth().x[0] > 0.4
+    # the latched message waited for the connection: nothing was lost, and the diagnostics say nothing about it
+    assert not [t.topic for t in rec.topics() if t.topic.startswith("/rosgrade/lost")]
+    assert not [note for note in result.diagnostics if "lost" in note]
+
+
+def test_other_clocks_and_timed_waits_follow_sim_time(tmp_path):
+    """asyncio.sleep, Event.wait, select and poll timeouts wait in sim time (no wall time burned); datetime.now and
+    time.localtime, clock_gettime and os.times' elapsed read sim time (issue 17)."""
+    result, rec = run_node(tmp_path, NODES / "realtime_clocks.py", Scenario(duration=4.0))
+    assert result.nodes[0].exit_code == 0, result.nodes[0].message
+    lines = [text for _, stream, text in rec.output_lines() if stream == "stdout"]
+    assert lines == ["asyncio.sleep(0.5) 0.5 0.5", "Event().wait(0.3) 0.3 0.3", "select 0.2 0.2 0.2", "poll 200 ms 0.2 0.2",
+                     "datetime is the stdlib's True True", "datetime.now matches time.time True",
+                     "localtime matches time.time True", "clock_gettime matches True True",
+                     "os.times elapsed matches True"]
+    assert result.wall_s < 3.0
 
 
 def test_arguments_remapping_and_stdin_reach_the_node(tmp_path):

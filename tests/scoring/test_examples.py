@@ -17,12 +17,23 @@ def _scripts(folder: Path) -> set[str]:
     return {p.name for p in folder.rglob("*.py")}
 
 
+def _reference_scripts(task: str) -> list[Path]:
+    """The reference node(s) of a task: its scripts, or the ones its reference launch file starts."""
+    rubric, folder = RUBRICS[task], ROOT / "reference_solutions"
+    if rubric.launch is None:
+        return [folder / node.script for node in rubric.nodes]
+    from grader.launch import find_packages, read_launch
+
+    launch = read_launch(folder / "launch" / rubric.launch.file, rubric.launch.args, find_packages(folder))
+    return [folder / node.type for node in launch.nodes]
+
+
 @pytest.mark.parametrize("task", sorted(RUBRICS))
 def test_every_task_has_an_executable_reference_node(task: str) -> None:
-    path = ROOT / "reference_solutions" / RUBRICS[task].nodes[0].script
-    text = path.read_text(encoding="utf-8")
-    assert text.startswith("#!/usr/bin/env python3\n") and "rospy" in text
-    compile(text, str(path), "exec")
+    for path in _reference_scripts(task):
+        text = path.read_text(encoding="utf-8")
+        assert text.startswith("#!/usr/bin/env python3\n") and "rospy" in text
+        compile(text, str(path), "exec")
 
 
 @pytest.mark.parametrize("student", sorted(EXPECTED))
@@ -34,6 +45,10 @@ def test_expected_outcomes_name_real_students_tasks_and_criteria(student: str) -
         assert set(expect["lose"]) | set(expect.get("keep", [])) <= ids
         assert not set(expect["lose"]) & set(expect.get("keep", []))
         assert set(expect.get("says", {})) <= set(expect["lose"])
+        if rubric.launch is not None:
+            names = {rubric.launch.file, *rubric.launch.aliases}
+            assert names & {p.name for p in folder.rglob("*.launch")}, f"{student} has no launch file for {task}"
+            continue
         names = {n.script for n in rubric.nodes} | {a for n in rubric.nodes for a in n.aliases}
         assert names & _scripts(folder), f"{student} has no script for {task}"
     for path in folder.rglob("*.py"):

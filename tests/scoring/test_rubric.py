@@ -16,6 +16,10 @@ CONTRACT = {
     "mover_odom_square": ["side_length", "corner_angle", "closure", "velocity_limits", "shutdown_stop"],
     "move_distance": ["stop_position", "stays_stopped", "velocity_limits"],
     "husky_distance": ["stop_distance", "velocity_limits"],
+    "figure_of_eight": ["loop_shape", "loop_directions", "stop_position", "duration", "log_rate", "log_format",
+                        "log_values", "velocity_limits", "shutdown_stop"],
+    "move_distance_launch": ["stop_position", "stays_stopped", "velocity_limits"],
+    "square_odom_launch": ["side_length", "corner_angle", "two_loop_stop", "pose_output", "output_rate"],
 }
 
 MINIMAL = '''
@@ -53,7 +57,7 @@ def test_every_shipped_rubric_loads_with_the_contracted_ids() -> None:
     assert {k: [c.id for c in r.criteria] for k, r in rubrics.items()} == CONTRACT
     for r in rubrics.values():
         assert r.max_score == sum(c.points for c in r.criteria) > 0
-        assert r.nodes[0].script.endswith(".py")
+        assert r.nodes[0].script.endswith(".py") if r.launch is None else r.launch.file.endswith(".launch")
 
 
 def test_robot_profiles_and_seed_specifics() -> None:
@@ -61,12 +65,11 @@ def test_robot_profiles_and_seed_specifics() -> None:
     assert rubrics["husky_distance"].robot == "husky_a200"
     assert rubrics["move_distance"].nodes[0].args == ["0.2", "0", "3"]
     assert "mover.py" in rubrics["mover_timed_square"].nodes[0].aliases
-    limits = {k: next(c for c in r.criteria if c.id == "velocity_limits").metric_params for k, r in rubrics.items()
-              if k != "odom_subscriber"}
+    limits = {k: c.metric_params for k, r in rubrics.items() for c in r.criteria if c.id == "velocity_limits"}
     assert {(p.max_linear, p.max_angular) for p in limits.values()} == {(0.26, 1.82), (1.0, 2.0)}  # type: ignore[attr-defined]
 
 
-@pytest.mark.parametrize("task", ["move_square", "mover_odom_square", "move_circle"])
+@pytest.mark.parametrize("task", ["move_square", "mover_odom_square", "move_circle", "figure_of_eight"])
 def test_hidden_variants_cover_world_start_yaw_near_pi_and_wheel_error(task: str) -> None:
     scenarios = load_rubrics()[task].scenarios
     assert any((s.initial_pose.x, s.initial_pose.y) == (-2.0, -0.5) for s in scenarios)
@@ -110,6 +113,13 @@ def test_minimal_instructor_rubric_loads(tmp_path: Path) -> None:
         ('title = "Loop radius"\n', "", "criteria[0] ('radius').title", "required field is missing"),
         ("shutdown_at = 25.0", "shutdown_at = 35.0", "scenarios[0] ('nominal')", "after the end of the run"),
         ("tolerance = {", 'params = { settle = 2 }\ntolerance = {', "criteria[0] ('radius')", "settle"),
+        ("tolerance = {", 'parts = [{ quantity = "radios", tolerance = { bounds = [0, 1] } }]\ntolerance = {',
+         "criteria[0] ('radius')", "quantity 'radios' is not measured by 'circle_fit'"),
+        ("tolerance = {", 'parts = [{ quantity = "rms_residual" }]\ntolerance = {',
+         "criteria[0] ('radius').parts[0].tolerance", "required field is missing"),
+        ('feedback.failed = "radius {radius:.2f} m"', 'feedback.failed = "r"\n[[criteria.hints]]\nwhen = '
+         '[{ quantity = "radius", min = 1 }]\ntext = "t"\ninstead = "maybe"', "criteria[0] ('radius').hints[0].instead",
+         "valid boolean"),
     ],
 )
 def test_malformed_rubric_names_file_field_and_expectation(

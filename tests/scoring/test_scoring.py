@@ -185,3 +185,34 @@ def test_recording_objects_are_adapted() -> None:
     assert report.score == report.max_score
     assert report.recordings == ["/tmp/nominal.mcap", "/tmp/offset_start.mcap"]
     assert _by_id(report)["stop_distance"].measured["final_distance"] == pytest.approx(10.2)
+
+
+def test_a_criterion_with_parts_averages_their_credit_and_instead_hints_replace_the_verdict(tmp_path) -> None:
+    from test_rubric import MINIMAL
+
+    from grader.rubric import load_rubric
+
+    parts = 'parts = [{ quantity = "revolutions", tolerance = { bounds = [10, 20] } }]\ntolerance = {'
+    instead = ('[[criteria.hints]]\nwhen = [{ quantity = "revolutions", max = 5 }]\ninstead = true\n'
+               'text = "only {revolutions:.1f} turns"\n')
+    path = tmp_path / "figure_eight.toml"  # MINIMAL's task id
+    path.write_text(MINIMAL.replace("tolerance = {", parts) + instead, encoding="utf-8")
+    rubric = load_rubric(path)
+    s = rubric.scenarios[0]
+    result = score_task(rubric, {"nominal": _scenario_run(s, [(25.0, 0.1, 0.2), (5.0, 0.0, 0.0)])}).criteria[0]
+    assert result.score == 1.0 and not result.passed  # radius right (full), 0.8 of 10 revolutions (none)
+    assert result.feedback == "only 0.8 turns"
+
+
+def test_rosout_levels_reach_the_metrics() -> None:
+    from grader.metrics.run import RunData
+
+    recording = SimpleNamespace(
+        odometry=lambda: SimpleNamespace(t=[0.0, 1.0], x=[0, 0], y=[0, 0], yaw=[0, 0]), ground_truth=lambda: None,
+        commands=lambda: SimpleNamespace(t=[], linear=np.zeros((0, 3)), angular=np.zeros((0, 3))),
+        output_lines=lambda: [(0.5, "stdout", "[WARN] [1.0, 0.5]: careful"), (0.5, "rosout", "careful"),
+                              (0.6, "rosout", "fine")],
+        rosout=lambda: [SimpleNamespace(level=4), SimpleNamespace(level=2)], metadata={})
+    lines = RunData.from_recording(recording).lines
+    assert [line.level for line in lines] == [None, "WARN", "INFO"]
+    assert [line.message() for line in lines] == [("WARN", "careful"), ("WARN", "careful"), ("INFO", "fine")]

@@ -7,6 +7,7 @@ from sim.bench import physics_benchmark
 def test_benchmark_reports_world_and_raw_rates() -> None:
     result = physics_benchmark("turtlebot3_waffle", sim_seconds=1.0)
     assert result["steps"] == 600
-    assert result["samples"] == 30 + 30 + 50 + 1  # odometry, /tf, ground truth, the scripted command
-    for key in ("rtf", "steps_per_s", "raw_rtf", "raw_steps_per_s"):
+    # odometry, /tf, ground truth, the scripted command, /imu, /joint_states, /scan
+    assert result["samples"] == 30 + 30 + 50 + 1 + 200 + 30 + 5
+    for key in ("rtf", "cpu_rtf", "steps_per_s", "raw_rtf", "raw_steps_per_s"):
         assert isinstance(result[key], float) and result[key] > 0

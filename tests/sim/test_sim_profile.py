@@ -127,6 +127,18 @@ def test_rate_must_divide_the_physics_step(tmp_path: Path) -> None:
         RobotProfile.from_toml(path)
 
 
+def test_sensor_rate_must_divide_the_physics_step(tmp_path: Path) -> None:
+    path = _edited_waffle(tmp_path, 'topic = "/scan", rate_hz = 5,', 'topic = "/scan", rate_hz = 7,')
+    with pytest.raises(ProfileError, match=r"modes.gazebo.sensors.scan.rate_hz = 7: expected a rate that divides"):
+        RobotProfile.from_toml(path)
+
+
+def test_scan_angles_must_increase(tmp_path: Path) -> None:
+    path = _edited_waffle(tmp_path, "angle_min = 0.0, angle_max = 6.28319", "angle_min = 1.0, angle_max = 0.5")
+    with pytest.raises(ProfileError, match=r"expected angle_min < angle_max and range_min < range_max"):
+        RobotProfile.from_toml(path)
+
+
 def test_default_mode_must_exist(tmp_path: Path) -> None:
     path = _edited_waffle(tmp_path, 'default_mode = "gazebo"', 'default_mode = "sim"')
     with pytest.raises(ProfileError, match=r"default_mode 'sim' is not one of the modes \['gazebo', 'real'\]"):

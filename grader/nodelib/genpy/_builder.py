@@ -12,7 +12,7 @@ import sys
 import types
 
 from . import _msgdefs
-from .message import DeserializationError, Message, SerializationError, _rosmsg_errors, struct_I
+from .message import DeserializationError, Message, SerializationError, _rosmsg_errors, numpy1_retry, struct_I
 from .rostime import Duration, Time
 
 _CODES = {"int8": "b", "uint8": "B", "byte": "b", "char": "B", "bool": "B", "int16": "h", "uint16": "H",
@@ -302,7 +302,7 @@ def _generate(cls: type, spec: _Spec) -> None:
     """Compile and attach __init__, serialize and deserialize for cls."""
     ns: dict = {"struct": struct, "_S_I": struct_I, "_Time": Time, "_Duration": Duration, "_Message": Message,
                 "SerializationError": SerializationError, "DeserializationError": DeserializationError,
-                "_rosmsg_errors": _rosmsg_errors}
+                "_rosmsg_errors": _rosmsg_errors, "_numpy1_retry": numpy1_retry}
     init = _Codegen(ns)
     init.line("if args or kwds:")
     init.line("    _Message.__init__(self, *args, **kwds)")
@@ -334,9 +334,9 @@ def _generate(cls: type, spec: _Spec) -> None:
 
     source = "\n".join([
         "def __init__(self, *args, **kwds):", *init.lines,
-        "def serialize(self, buff):", "    try:", *(ser.lines or ["        pass"]),
-        "    except struct.error as _e:", "        " + error,
-        "    except TypeError as _e:", "        " + error,
+        "def serialize(self, buff):", "    _start = buff.tell()", "    try:", *(ser.lines or ["        pass"]),
+        "    except (struct.error, TypeError) as _e:",
+        "        if not _numpy1_retry(self, buff, _start):", "            " + error,
         "def deserialize(self, _s):", "    try:", *des.lines, "        return self",
         "    except struct.error as _e:", "        raise DeserializationError(_e)",
     ])

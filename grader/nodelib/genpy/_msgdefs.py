@@ -104,6 +104,14 @@ MESSAGES: dict[str, str] = {
 
 # request and response of each service, split at the "---" line as in a .srv file
 SERVICES: dict[str, str] = {
+    "nav_msgs/GetMap": "---\nnav_msgs/OccupancyGrid map",
+    "nav_msgs/GetPlan": "geometry_msgs/PoseStamped start\ngeometry_msgs/PoseStamped goal\nfloat32 tolerance\n---\n"
+                        "nav_msgs/Path plan",
+    "nav_msgs/LoadMap": "string map_url\n---\nuint8 RESULT_SUCCESS=0\nuint8 RESULT_MAP_DOES_NOT_EXIST=1\n"
+                        "uint8 RESULT_INVALID_MAP_DATA=2\nuint8 RESULT_INVALID_MAP_METADATA=3\n"
+                        "uint8 RESULT_UNDEFINED_FAILURE=255\nnav_msgs/OccupancyGrid map\nuint8 result",
+    "nav_msgs/SetMap": "nav_msgs/OccupancyGrid map\ngeometry_msgs/PoseWithCovarianceStamped initial_pose\n---\n"
+                       "bool success",
     "std_srvs/Empty": "---",
     "std_srvs/SetBool": "bool data\n---\nbool success\nstring message",
     "std_srvs/Trigger": "---\nbool success\nstring message",

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import codecs
+import copy
 import logging
 import re
 import struct
@@ -34,6 +35,46 @@ def _valid_float_types() -> tuple:
         _numpy_float_types = (float, int, np.float32, np.float64, np.int8, np.int16, np.int32, np.int64,
                               np.uint8, np.uint16, np.uint32, np.uint64)
     return _numpy_float_types
+
+
+def _numpy1_copy(msg: Message, np) -> Message | None:
+    """A copy of msg whose float fields hold plain floats where they held size-1 numpy arrays (None: no such field)."""
+    changed = False
+
+    def fixed(value, type_):
+        nonlocal changed
+        if type_ in ("float32", "float64") and isinstance(value, np.ndarray) and value.size == 1:
+            changed = True
+            return float(value.reshape(-1)[0])
+        if isinstance(value, Message):
+            return _fields_fixed(value)
+        if type(value) in (list, tuple) and type_.endswith("]"):
+            return [fixed(item, type_[:type_.index("[")]) for item in value]
+        return value
+
+    def _fields_fixed(m: Message) -> Message:
+        out = copy.copy(m)
+        for name, type_ in zip(m.__slots__, m._slot_types):
+            setattr(out, name, fixed(getattr(m, name), type_))
+        return out
+
+    result = _fields_fixed(msg)
+    return result if changed else None
+
+
+def numpy1_retry(msg: Message, buff, start: int) -> bool:
+    """Serialize again as genpy does on numpy 1, where struct.pack took a size-1 array as a float (numpy 2 refuses);
+    False when msg holds no such value, so the original error stands."""
+    np = sys.modules.get("numpy")
+    if np is None:
+        return False
+    plain = _numpy1_copy(msg, np)
+    if plain is None:
+        return False
+    buff.seek(start)
+    buff.truncate()
+    plain.serialize(buff)
+    return True
 
 
 class MessageException(Exception):

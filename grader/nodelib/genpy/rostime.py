@@ -38,6 +38,8 @@ class TVal:
             whole = int(secs)
             nsecs = int((secs - whole) * 1e9)
             secs = whole
+        else:
+            secs, nsecs = int(secs), int(nsecs)  # Time(0, 5e8) keeps integer fields
         self.secs, self.nsecs = _canon(secs, nsecs)
 
     @classmethod

@@ -8,7 +8,7 @@ import sys
 
 import rosgrade_channel as ch
 
-from . import excepthook, runtime, streams, timepatch
+from . import excepthook, realtime, runtime, streams, threads, timepatch
 from .link import Link
 from .scheduler import Scheduler
 
@@ -40,15 +40,18 @@ def start(channel: str) -> None:
     runtime.link = link
     runtime.scheduler = Scheduler(link, t_ns)
     runtime.params = params
-    runtime.stable_pid = bool(start_msg.get("stable_pid"))
     runtime.wall_epoch_ns = round(wall_epoch * 1e9)
     runtime.ros_namespace = str(start_msg.get("ros_namespace") or "")
+    runtime.world_topics = [tuple(pair) for pair in start_msg.get("world_topics") or ()
+                            if isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, str) for x in pair)]
     if runtime.ros_namespace:
         os.environ["ROS_NAMESPACE"] = runtime.ros_namespace
 
     sys.stdout = streams.make_stream(link, 1, 1, "strict")
     sys.stderr = streams.make_stream(link, 2, 2, "backslashreplace")
     timepatch.install()
+    threads.install()
+    realtime.install()
     excepthook.install()
     atexit.register(_flush)
 

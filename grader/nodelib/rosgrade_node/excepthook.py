@@ -11,8 +11,6 @@ import rosgrade_channel as ch
 from . import runtime
 
 _NODELIB_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
-_MAX_MESSAGE = 4000
-_MAX_FRAMES = 50
 
 
 def _is_student_frame(filename: str) -> bool:
@@ -33,12 +31,13 @@ def report(exc_type: type, exc: BaseException | None, tb, where: str = "uncaught
     """
     if runtime.link is None:
         return
-    frames = [{"file": f.filename, "line": f.lineno, "function": f.name, "text": f.line or ""}
+    frames = [{"file": f.filename[:ch.MAX_PATH_CHARS], "line": f.lineno, "function": f.name[:ch.MAX_LABEL_CHARS],
+               "text": (f.line or "")[:ch.MAX_MESSAGE_CHARS]}
               for f in traceback.extract_tb(tb) if _is_student_frame(f.filename)]
     runtime.link.send_json(ch.EXCEPTION, {
-        "type": type_name(exc_type),
-        "message": str(exc)[:_MAX_MESSAGE] if exc is not None else "",
-        "frames": frames[-_MAX_FRAMES:],
+        "type": type_name(exc_type)[:ch.MAX_LABEL_CHARS],
+        "message": str(exc)[:ch.MAX_MESSAGE_CHARS] if exc is not None else "",
+        "frames": frames[-ch.MAX_TRACEBACK_FRAMES:],
         "where": where,
     })
 

@@ -14,12 +14,13 @@ _OUTPUT_CHUNK = 64 * 1024
 
 @dataclass
 class Batch:
-    """What the grader sent between a WAIT and its RESUME."""
+    """What the grader sent in answer to a WAIT (one BATCH frame)."""
 
     t_ns: int
     clock_ns: int
     deliveries: list[tuple[int, bytes]] = field(default_factory=list)
     shutdown: str | None = None
+    connections: dict[int, int] = field(default_factory=dict)  # changed connection counts per topic handle
 
 
 class Link:
@@ -56,28 +57,24 @@ class Link:
             _fail(exc)
 
     def read_batch(self) -> Batch:
-        """Read ADVANCE, then DELIVER* and an optional SHUTDOWN, up to RESUME."""
+        """Read one BATCH: the new time, changed connection counts, deliveries and maybe a shutdown request."""
         try:
-            advance = self._read_json(ch.ADVANCE)
-            batch = Batch(t_ns=_int(advance, "t_ns"), clock_ns=_int(advance, "clock_ns"))
-            while True:
-                kind, payload = self._reader.read()
-                if kind == ch.RESUME:
-                    return batch
-                if kind == ch.DELIVER:
-                    batch.deliveries.append(ch.split_id_bytes(payload))
-                elif kind == ch.SHUTDOWN:
-                    batch.shutdown = str(ch.decode_json(payload).get("reason", ""))
-                else:
-                    raise ch.ChannelError(f"unexpected {ch.KIND_NAMES.get(kind, kind)} inside a batch")
+            header, deliveries = ch.decode_batch(self._read(ch.BATCH))
+            shutdown = header.get("shutdown")
+            return Batch(t_ns=_int(header, "t_ns"), clock_ns=_int(header, "clock_ns"), deliveries=deliveries,
+                         shutdown=None if shutdown is None else str(shutdown),
+                         connections=_counts(header.get("connections") or {}))
         except (ch.ChannelError, OSError) as exc:
             _fail(exc)
 
-    def _read_json(self, kind: int) -> dict:
+    def _read(self, kind: int) -> bytes:
         got, payload = self._reader.read()
         if got != kind:
             raise ch.ChannelError(f"expected {ch.KIND_NAMES[kind]}, got {ch.KIND_NAMES.get(got, got)}")
-        return ch.decode_json(payload)
+        return payload
+
+    def _read_json(self, kind: int) -> dict:
+        return ch.decode_json(self._read(kind))
 
 
 def _fail(exc: BaseException) -> NoReturn:
@@ -86,6 +83,15 @@ def _fail(exc: BaseException) -> NoReturn:
         os.write(2, f"rosgrade node: channel error: {exc}\n".encode())
     finally:
         os._exit(1)
+
+
+def _counts(obj) -> dict[int, int]:
+    if not isinstance(obj, dict):
+        raise ch.ChannelError("BATCH connections must be an object")
+    try:
+        return {int(ident): _int(obj, ident) for ident in obj}
+    except ValueError:
+        raise ch.ChannelError("BATCH connections must map topic handles to counts") from None
 
 
 def _int(obj: dict, key: str) -> int:

@@ -10,7 +10,7 @@ scheduler: Scheduler | None = None
 params: dict = {}
 ros_namespace: str = ""
 wall_epoch_ns: int = 0
-stable_pid: bool = False  # the node has its own PID namespace, so os.getpid() is the same on every run
+world_topics: list = []  # [topic, type] pairs the world publishes (for rospy.get_published_topics)
 
 
 def wall_time() -> float:

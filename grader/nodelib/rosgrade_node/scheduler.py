@@ -1,6 +1,7 @@
 """The lockstep scheduler: one token shared by every thread that runs student code, sim-time waits, WAIT/batch exchange.
 
-Managed threads are the main thread, one callback thread per subscribed topic and rospy.Timer threads. Exactly one of
+Managed threads are the main thread, one callback thread per subscribed topic, rospy.Timer threads and the threads the
+student starts from a managed thread (see threads.py). Exactly one of
 them holds the token and runs; a blocking library call (``block``) registers a wake condition and passes the token on.
 When no thread can run, the thread that blocked last sends ``WAIT {wake_ns}`` and applies the grader's batch. After a
 batch the order is fixed: topic threads that received messages (in delivery order), then threads whose wake
@@ -40,10 +41,12 @@ def _raise_keyboard_interrupt(reason: str) -> None:
 class _Waiter:
     """One managed thread's scheduling state."""
 
-    __slots__ = ("name", "event", "deadline_ns", "ready", "seq", "ident")
+    __slots__ = ("name", "event", "deadline_ns", "ready", "seq", "ident", "finished", "daemon")
 
-    def __init__(self, name: str) -> None:
+    def __init__(self, name: str, daemon: bool = True) -> None:
         self.name = name
+        self.daemon = daemon
+        self.finished = False
         self.event = threading.Event()
         self.deadline_ns: int | None = None
         self.ready: Callable[[], bool] | None = None
@@ -74,8 +77,11 @@ class Scheduler:
         self._blocked: dict[_Waiter, None] = {}
         self._runnable: deque[_Waiter] = deque()
         self._sinks: dict[int, Callable[[bytes], _Waiter | None]] = {}
-        # Threads the node did not create (student threading.Thread) wait here, outside the token.
+        # Topic handle -> how many nodes it is connected to, as the grader last said (get_num_connections()).
+        self.connections: dict[int, int] = {}
+        # Threads started outside the token (from a thread the scheduler does not manage) wait here.
         self._outside = threading.Condition()
+        self.adopted: list[_Waiter] = []  # student threads, in start order
 
     # -- queries ---------------------------------------------------------------------------------------------------
     def holds_token(self) -> bool:
@@ -166,20 +172,8 @@ class Scheduler:
         """Start a managed daemon thread. It first runs when handed the token: in FIFO order after the current
         holder blocks, or (with ``ready``) once ``ready()`` holds."""
         waiter = _Waiter(name)
-
-        def run() -> None:
-            waiter.event.wait()
-            waiter.event.clear()
-            try:
-                target()
-            except SystemExit:
-                pass
-            except BaseException:
-                threading.excepthook(threading.ExceptHookArgs((*sys.exc_info(), threading.current_thread())))
-            finally:
-                self._exit(waiter)
-
-        thread = threading.Thread(target=run, name=name, daemon=True)
+        thread = threading.Thread(target=lambda: self.run_managed(waiter, target), name=name, daemon=True)
+        thread.rosgrade_managed = True  # threads.py leaves it alone
         waiter.seq = next(self._seq)
         if ready is None:
             self._runnable.append(waiter)
@@ -191,8 +185,34 @@ class Scheduler:
         self._threads[thread.ident] = waiter
         return waiter
 
+    def adopt(self, name: str, daemon: bool) -> _Waiter:
+        """A student thread about to start: it first runs, in FIFO order, once the current holder blocks."""
+        waiter = _Waiter(name, daemon)
+        waiter.seq = next(self._seq)
+        self._runnable.append(waiter)
+        self.adopted.append(waiter)
+        return waiter
+
+    def register(self, waiter: _Waiter, ident: int) -> None:
+        """The adopted thread has started (before it can hold the token)."""
+        waiter.ident = ident
+        self._threads[ident] = waiter
+
+    def run_managed(self, waiter: _Waiter, target: Callable[[], None]) -> None:
+        """A managed thread's body: wait for the token, run target, report what escaped it, hand the token on."""
+        waiter.event.wait()
+        waiter.event.clear()
+        try:
+            target()
+        except SystemExit:
+            pass
+        except BaseException:
+            threading.excepthook(threading.ExceptHookArgs((*sys.exc_info(), threading.current_thread())))
+        finally:
+            self._exit(waiter)
+
     def add_sink(self, ident: int, sink: Callable[[bytes], _Waiter | None]) -> None:
-        """Route DELIVER frames for handle ``ident``; the sink returns the thread that will consume the message."""
+        """Route deliveries (in BATCH frames) for handle ``ident``; the sink returns the thread that will consume the message."""
         self._sinks[ident] = sink
 
     def remove_sink(self, ident: int) -> None:
@@ -235,6 +255,7 @@ class Scheduler:
             me.event.clear()
 
     def _exit(self, w: _Waiter) -> None:
+        w.finished = True
         self._threads.pop(w.ident, None)
         self._blocked.pop(w, None)
         self._switch(None)
@@ -249,6 +270,7 @@ class Scheduler:
         if batch.t_ns > self.world_ns:
             self.charge_ns = 0
         self.world_ns, self.clock_ns = batch.t_ns, batch.clock_ns
+        self.connections.update(batch.connections)
         woken: dict[_Waiter, None] = {}
         for ident, data in batch.deliveries:
             sink = self._sinks.get(ident)

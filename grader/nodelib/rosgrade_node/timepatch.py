@@ -20,7 +20,7 @@ def _mono_ns() -> int:
     return _MONOTONIC_OFFSET_NS + runtime.scheduler.world_ns
 
 
-def _seconds_to_ns(secs) -> int:
+def seconds_to_ns(secs) -> int:
     """time.sleep's argument rules: a real number (or an object with __float__/__index__), not negative."""
     if isinstance(secs, int) or hasattr(secs, "__index__") and not hasattr(secs, "__float__"):
         value = float(operator.index(secs))
@@ -38,7 +38,7 @@ def _seconds_to_ns(secs) -> int:
 def sleep(secs) -> None:
     """Block for ``secs`` of sim time, waking at the exact nanosecond deadline."""
     try:
-        runtime.scheduler.sleep_ns(_seconds_to_ns(secs))
+        runtime.scheduler.sleep_ns(seconds_to_ns(secs))
     except KeyboardInterrupt as exc:
         if type(exc) is not KeyboardInterrupt:
             raise

@@ -12,6 +12,7 @@ from .core import (is_shutdown, is_shutdown_requested, logdebug, logdebug_once, 
                    logwarn_throttle, logwarn_throttle_identical, on_shutdown, signal_shutdown)
 from .exceptions import (ROSException, ROSInitException, ROSInternalException, ROSInterruptException,
                          ROSSerializationException, ROSTimeMovedBackwardsException)
+from .graph import SubscribeListener, get_param_cached, get_published_topics, remap_name
 from .msg import AnyMsg
 from .names import get_caller_id, get_name, get_namespace, resolve_name
 from .rostime import Duration, Time, get_rostime, get_time

@@ -18,17 +18,9 @@ from .exceptions import ROSException, ROSInitException, ROSInterruptException
 from .names import myargv  # noqa: F401 - rospy.client exports it
 from .params import delete_param, get_param, get_param_names, has_param, search_param, set_param  # noqa: F401
 
-# Outside its own PID namespace a node's PID differs from run to run; the anonymous-name suffix then uses this
-# stand-in so that recordings stay identical.
-_STAND_IN_PID = 4242
-
-
-def _anonymous_pid() -> int:
-    """os.getpid() where it is the same on every run (the grader gave the node its own PID namespace)."""
-    return os.getpid() if runtime.stable_pid else _STAND_IN_PID
-
-
 _init_node_args: tuple | None = None
+# How long init_node takes (real rospy: about 0.1 s; 3-6 /odom callbacks at 30 Hz ran meanwhile in measured runs).
+INIT_NODE_NS = 100_000_000
 
 
 def init_node(name, argv=None, anonymous=False, log_level=None, disable_rostime=False, disable_rosout=False,
@@ -61,7 +53,7 @@ def init_node(name, argv=None, anonymous=False, log_level=None, disable_rostime=
         name = mappings["__name"]
         anonymous = False
     elif anonymous:
-        name = "%s_%s_%s" % (name, _anonymous_pid(), int(time.time() * 1000))
+        name = "%s_%s_%s" % (name, os.getpid(), int(time.time() * 1000))
     if not names.is_legal_base_name(name):
         warnings.warn("'%s' is not a legal ROS base name. This may cause problems with other ROS tools." % name,
                       stacklevel=2)
@@ -69,28 +61,31 @@ def init_node(name, argv=None, anonymous=False, log_level=None, disable_rostime=
     names.initialize_mappings(resolved)
     names.set_node_name(resolved)
 
-    params.load(runtime.params)
-    if not params.has_param("/use_sim_time"):
-        params.set_param("/use_sim_time", True)
     for arg in argv:
         key, sep, value = arg.partition(names.REMAP)
         if sep and len(key) > 1 and key[0] == "_" and key[1] != "_":
             params.set_param(names.PRIV_NAME + key[1:], params.parse_scalar(value))
 
+    if not disable_signals:  # rospy installs its handlers first: Ctrl+C from here on runs its shutdown
+        sched.on_interrupt = core.signal_shutdown
+        for signum in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(signum, lambda num, frame: sched.request_interrupt("signal-%d" % num, frame))
+    core.add_internal_shutdown_hook(topics.close_all)
+    # Registering takes real rospy about 0.1 s: topics created before init_node connect meanwhile, so their
+    # callbacks run (and find the time not yet initialized) and their publishers are connected when it returns.
+    core.set_initializing(log_level)
+    topics.announce_pending()
+    sched.sleep_ns(INIT_NODE_NS)
+    if core._shutdown_flag:
+        raise ROSInitException("init_node interrupted before it could complete")
     core.set_initialized(log_level)
     rostime.set_initialized()
-    core.add_internal_shutdown_hook(topics.close_all)
     runtime.link.send_json(ch.INIT, {"name": resolved, "anonymous": bool(anonymous), "log_level": log_level,
                                      "disable_signals": bool(disable_signals)})
-    topics.announce_pending()
     # Real rospy's first /clock arrives 4-10 ms after init_node returns: the time reads 0 until the node first
     # blocks (sleep, spin, a Rate), or until its calls have charged a clock period (a busy loop).
     sched.charge_ns = 0
     sched.node_initialized = True
-    if not disable_signals:
-        sched.on_interrupt = core.signal_shutdown
-        for signum in (signal.SIGINT, signal.SIGTERM):
-            signal.signal(signum, lambda num, frame: sched.request_interrupt("signal-%d" % num, frame))
     atexit.register(core.signal_shutdown, "atexit")
 
 

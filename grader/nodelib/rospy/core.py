@@ -18,6 +18,7 @@ DEBUG, INFO, WARN, ERROR, FATAL = 1, 2, 4, 8, 16
 _LEVEL_NAMES = {DEBUG: "DEBUG", INFO: "INFO", WARN: "WARN", ERROR: "ERROR", FATAL: "FATAL"}
 
 _initialized = False
+_initializing = False  # init_node is registering the node (topics created now are announced at once)
 _log_level = INFO
 _client_hooks: list[Callable[[], object]] = []
 # Run with the reason once the client hooks are done and is_shutdown() is True (topics close here).
@@ -29,6 +30,17 @@ _shutdown_flag = False
 # -- initialization ------------------------------------------------------------------------------------------------
 def is_initialized() -> bool:
     return _initialized
+
+
+def is_initializing() -> bool:
+    return _initializing
+
+
+def set_initializing(log_level: int | None) -> None:
+    """init_node has configured logging and is registering the node (rospy's start_node)."""
+    global _initializing, _log_level
+    _initializing = True
+    _log_level = log_level if log_level is not None else INFO
 
 
 def set_initialized(log_level: int | None) -> None:
@@ -102,13 +114,16 @@ def format_message(msg: object, args: tuple) -> str:
     return text
 
 
-def format_line(level: int, text: str, wall: float, sim: float) -> str:
-    """rospy's console line under sim time: ``[INFO] [wall, sim]: text``."""
+def format_line(level: int, text: str, wall: float, sim: float | None) -> str:
+    """rospy's console line under sim time, ``[INFO] [wall, sim]: text``; ``[INFO] [wall]: text`` while init_node
+    has not yet set up the ROS clock (``sim`` None)."""
+    if sim is None:
+        return "[%s] [%f]: %s\n" % (_LEVEL_NAMES[level], wall, text)
     return "[%s] [%f, %f]: %s\n" % (_LEVEL_NAMES[level], wall, sim, text)
 
 
 def _emit(level: int, msg: object, args: tuple, frame) -> None:
-    if not _initialized:
+    if not (_initialized or _initializing):
         # rospy's logger has no handler yet: Python's last resort prints WARN and above bare on stderr
         if level >= WARN:
             sys.stderr.write(format_message(msg, args) + "\n")
@@ -116,9 +131,9 @@ def _emit(level: int, msg: object, args: tuple, frame) -> None:
     if level < _log_level:
         return
     text = format_message(msg, args)
-    sim = runtime.scheduler.clock_ns / 1e9 if rostime.is_initialized() else 0.0
+    sim = runtime.scheduler.clock_ns / 1e9 if rostime.is_initialized() else None
     (sys.stdout if level <= INFO else sys.stderr).write(format_line(level, text, runtime.wall_time(), sim))
-    if runtime.link is not None:
+    if runtime.link is not None and _initialized:  # rospy's /rosout publisher comes up once init_node has registered
         runtime.link.send_json(ch.LOG, {"level": level, "msg": text, "name": names.get_name(),
                                         "file": frame.f_code.co_filename, "function": frame.f_code.co_name,
                                         "line": frame.f_lineno})

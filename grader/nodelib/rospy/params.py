@@ -4,6 +4,9 @@ from __future__ import annotations
 import copy
 import json
 import re
+import xmlrpc.client
+
+from rosgrade_node import runtime
 
 from . import names
 
@@ -63,14 +66,21 @@ def load(params: dict) -> None:
         set_param(names.make_global_ns(key)[:-1] if key.strip("/") else "/", value)
 
 
+def _as_master_stores(value):
+    """The value as it comes back from rosmaster: sent over XML-RPC, so a tuple reads back as a list and None or
+    an object XML-RPC cannot carry raises its TypeError."""
+    return xmlrpc.client.loads(xmlrpc.client.dumps((value,)))[0][0]
+
+
 def set_param(param_name: str, param_value) -> None:
     """Set a parameter; a dict value sets a whole namespace."""
+    param_value = _as_master_stores(param_value)
     parts = _parts(names.resolve_name(param_name))
     if not parts:
         if not isinstance(param_value, dict):
             raise TypeError("cannot set root of parameter tree to non-dictionary")
         _root.clear()
-        _root.update(copy.deepcopy(param_value))
+        _root.update(param_value)
         return
     node = _root
     for part in parts[:-1]:
@@ -78,7 +88,7 @@ def set_param(param_name: str, param_value) -> None:
         if not isinstance(child, dict):
             child = node[part] = {}
         node = child
-    node[parts[-1]] = copy.deepcopy(param_value)
+    node[parts[-1]] = param_value
 
 
 def _lookup(param_name: str):
@@ -149,3 +159,13 @@ def get_param_names() -> list[str]:
 
     walk(names.SEP, _root)
     return found
+
+
+def load_start_parameters() -> None:
+    """The parameter server as the grader started it (readable before init_node, as rosmaster's is)."""
+    load(runtime.params)
+    if not has_param("/use_sim_time"):
+        set_param("/use_sim_time", True)
+
+
+load_start_parameters()

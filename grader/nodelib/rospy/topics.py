@@ -1,4 +1,4 @@
-"""rospy.Publisher and rospy.Subscriber over the grader channel, with one callback thread per topic."""
+"""rospy.Publisher and rospy.Subscriber over the grader channel, with connection counts and one connection per topic."""
 from __future__ import annotations
 
 import io
@@ -17,12 +17,12 @@ from . import core, names, rostime
 from .exceptions import ROSException, ROSSerializationException
 from .msg import args_kwds_to_message
 
-# Handles are the node's ids for ADVERTISE/SUBSCRIBE/PUBLISH/DELIVER/UNREGISTER.
+# Handles are the node's ids for ADVERTISE/SUBSCRIBE/PUBLISH/UNREGISTER and for deliveries in BATCH frames.
 _handle_ids = itertools.count(1)
-# Topics created before init_node: rospy registers them with the master at init; we announce them then.
-_pending: list[Topic] = []
-_open: dict[int, Topic] = {}
-_topic_threads: dict[str, _TopicThread] = {}
+# Handles created before init_node: rospy registers them with the master during init; we announce them then.
+_pending: list[_Registration] = []
+_open: dict[int, _Registration] = {}
+_sub_impls: dict[str, _SubscriberImpl] = {}
 # The world's topics are published by Gazebo; received messages carry this caller id.
 _PUBLISHER_CALLERID = "/gazebo"
 
@@ -44,7 +44,7 @@ def _check_args(name, data_class) -> None:
 
 
 class Topic:
-    """What Publisher and Subscriber share: the resolved name, the message class and the channel handle."""
+    """What Publisher and Subscriber share: the resolved name and the message class."""
 
     def __init__(self, name: str, data_class: type, reg_type: str) -> None:
         _check_args(name, data_class)
@@ -53,54 +53,54 @@ class Topic:
         self.type = data_class._type
         self.md5sum = data_class._md5sum
         self.reg_type = reg_type
-        # Not None while registered (rospy's impl); publish() on an unregistered handle fails.
-        self.impl: int | None = next(_handle_ids)
-        self._announced = False
 
-    def _register(self) -> None:
-        if core.is_initialized():
-            self._announce()
+
+class _Registration:
+    """One channel handle (ADVERTISE/SUBSCRIBE ... UNREGISTER); announced at once, or at init_node if created before."""
+
+    reg_type = "pub"
+
+    def __init__(self, resolved_name: str, data_class: type) -> None:
+        self.resolved_name = resolved_name
+        self.data_class = data_class
+        self.handle: int = next(_handle_ids)
+        self.announced = False
+        self.queue_size: int | None = None
+        self.latch = False
+
+    def register(self) -> None:
+        if core.is_initialized() or core.is_initializing():
+            self.announce()
         else:
             _pending.append(self)
 
-    def _announce(self) -> None:
-        if core._shutdown_flag or self.impl is None:
+    def announce(self) -> None:
+        if core._shutdown_flag:
             return
         kind = ch.ADVERTISE if self.reg_type == "pub" else ch.SUBSCRIBE
-        runtime.link.send_json(kind, {"id": self.impl, "topic": self.resolved_name, "type": self.type,
-                                      "md5sum": self.md5sum, "queue_size": self._queue_size(),
-                                      "latch": self._latch()})
-        self._announced = True
-        _open[self.impl] = self
+        runtime.link.send_json(kind, {"id": self.handle, "topic": self.resolved_name, "type": self.data_class._type,
+                                      "md5sum": self.data_class._md5sum, "queue_size": self.queue_size,
+                                      "latch": self.latch})
+        self.announced = True
+        _open[self.handle] = self
 
-    def _queue_size(self) -> int | None:
-        return None
-
-    def _latch(self) -> bool:
-        return False
-
-    def _close(self) -> None:
+    def close(self) -> None:
         """Tell the grader the handle is gone (once)."""
-        if self._announced:
-            self._announced = False
-            _open.pop(self.impl, None)
-            runtime.link.send_json(ch.UNREGISTER, {"id": self.impl})
+        if self.announced:
+            self.announced = False
+            _open.pop(self.handle, None)
+            runtime.link.send_json(ch.UNREGISTER, {"id": self.handle})
         if self in _pending:
             _pending.remove(self)
 
-    def get_num_connections(self) -> int:
-        """1 once the grader knows the topic (the world is taken to be connected), else 0."""
-        return 1 if self._announced else 0
-
-    def unregister(self) -> None:
-        """Close the handle; further calls have no effect."""
-        if self.impl is not None:
-            self._close()
-            self.impl = None
+    def num_connections(self) -> int:
+        """How many nodes the grader has connected this handle to (the robot's base counts as one)."""
+        return runtime.scheduler.connections.get(self.handle, 0) if self.announced else 0
 
 
 class Publisher(Topic):
-    """Publishes messages to the grader. Serialization always runs (the robot always subscribes)."""
+    """Publishes messages to the grader; bad field values raise only while a subscriber is connected (rospy
+    serializes only then)."""
 
     def __init__(self, name, data_class, subscriber_listener=None, tcp_nodelay=False, latch=False, headers=None,
                  queue_size=None) -> None:
@@ -111,13 +111,20 @@ class Publisher(Topic):
             warnings.warn("The publisher should be created with an explicit keyword argument 'queue_size'. "
                           "Please see http://wiki.ros.org/rospy/Overview/Publishers%20and%20Subscribers for more "
                           "information.", SyntaxWarning, stacklevel=2)
-        self._register()
+        self.impl: _Registration | None = _Registration(self.resolved_name, data_class)
+        self.impl.queue_size = queue_size if isinstance(queue_size, int) else None
+        self.impl.latch = self.latch
+        self.impl.register()
 
-    def _queue_size(self) -> int | None:
-        return self.queue_size if isinstance(self.queue_size, int) else None
+    def get_num_connections(self) -> int:
+        """The number of subscribing nodes connected: 0 until the first has connected (about 50 ms)."""
+        return self.impl.num_connections() if self.impl is not None else 0
 
-    def _latch(self) -> bool:
-        return self.latch
+    def unregister(self) -> None:
+        """Close the handle; further calls have no effect."""
+        if self.impl is not None:
+            self.impl.close()
+            self.impl = None
 
     def publish(self, *args, **kwds) -> None:
         """Publish a message, or build one from ``args``/``kwds``; silently dropped after shutdown."""
@@ -127,19 +134,22 @@ class Publisher(Topic):
             raise ROSException("ROS node has not been initialized yet. Please call init_node() first")
         data = args_kwds_to_message(self.data_class, args, kwds)
         rostime.charge()
-        if core._shutdown_flag or not self._announced:
+        if core._shutdown_flag or not self.impl.announced:
             return None
         buff = io.BytesIO()
         try:
             data.serialize(buff)
         except genpy.SerializationError as exc:
+            if not self.impl.num_connections():
+                return None  # rospy never serializes for a topic nobody is connected to
             raise ROSSerializationException(str(exc)) from None
-        runtime.link.send_message(ch.PUBLISH, self.impl, buff.getvalue())
+        runtime.link.send_message(ch.PUBLISH, self.impl.handle, buff.getvalue())
         return None
 
 
 class Subscriber(Topic):
-    """Receives the grader's DELIVER frames; callbacks run in the topic's own thread, one message at a time."""
+    """A callback on a topic; every Subscriber on one topic in a node shares that topic's connection (its
+    ``_SubscriberImpl``): one queue, one message class, one thread that calls the callbacks in turn."""
 
     def __init__(self, name, data_class, callback=None, callback_args=None, queue_size=None, buff_size=65536,
                  tcp_nodelay=False) -> None:
@@ -153,86 +163,125 @@ class Subscriber(Topic):
         self.queue_size = queue_size
         self.callback = callback
         self.callback_args = callback_args
-        thread = _topic_threads.get(self.resolved_name)
-        if thread is None:
-            thread = _topic_threads[self.resolved_name] = _TopicThread(self.resolved_name)
-        self._thread = thread
-        runtime.scheduler.add_sink(self.impl, lambda data: thread.push(self, data))
-        self._register()
+        impl = _sub_impls.get(self.resolved_name)
+        if impl is None:
+            impl = _sub_impls[self.resolved_name] = _SubscriberImpl(self.resolved_name, data_class)
+        self.impl: _SubscriberImpl | None = impl
+        impl.acquire(self)
 
-    def _queue_size(self) -> int | None:
-        return self.queue_size
-
-    def _close(self) -> None:
-        runtime.scheduler.remove_sink(self.impl)
-        self._thread.drop(self)
-        super()._close()
+    def get_num_connections(self) -> int:
+        """The number of publishing nodes connected to this topic's connection."""
+        return self.impl.num_connections() if self.impl is not None else 0
 
     def unregister(self) -> None:
-        self.callback = self.callback_args = None
-        super().unregister()
+        """Stop receiving; further calls have no effect."""
+        if self.impl is not None:
+            self.impl.release(self)
+            self.impl = None
+            self.callback = self.callback_args = None
 
-    def _dispatch(self, data: bytes) -> None:
-        """Deserialize and run the callback; an exception is logged as rospy does and the node carries on."""
-        if self.impl is None or core._shutdown_flag:
+
+class _SubscriberImpl(_Registration):
+    """The node's connection to one topic: registered while any Subscriber uses it. The first subscriber's class
+    decodes the messages; the last queue_size given wins (as in rospy)."""
+
+    reg_type = "sub"
+
+    def __init__(self, resolved_name: str, data_class: type) -> None:
+        super().__init__(resolved_name, data_class)
+        self.subscribers: list[Subscriber] = []
+        self.queue: deque[bytes] = deque()
+        self.waiter = runtime.scheduler.spawn(resolved_name, self._run, ready=self._has_messages)
+
+    def acquire(self, sub: Subscriber) -> None:
+        if not self.subscribers:
+            if self.announced or self in _pending:
+                self.close()
+            self.handle = next(_handle_ids)
+            self.data_class = sub.data_class
+            self.queue_size = None
+            runtime.scheduler.add_sink(self.handle, self._push)
+            self.subscribers.append(sub)
+            self._set_queue_size(sub.queue_size)
+            self.register()
             return
-        msg = self.data_class()
-        msg.deserialize(data)
-        msg._connection_header = {"callerid": _PUBLISHER_CALLERID, "md5sum": self.md5sum, "topic": self.resolved_name,
-                                  "type": self.type, "message_definition": self.data_class._full_text,
-                                  "latching": "0"}
-        callback = self.callback
-        if callback is None:
-            return
-        try:
-            if self.callback_args is None:
-                callback(msg)
-            else:
-                callback(msg, self.callback_args)
-        except Exception:
-            excepthook.report_current("callback")
-            core.logerr("bad callback: %s\n%s" % (stable_repr(callback), traceback.format_exc()))
+        self.subscribers.append(sub)
+        self._set_queue_size(sub.queue_size)
 
+    def _set_queue_size(self, queue_size: int | None) -> None:
+        if queue_size is not None:
+            self.queue_size = queue_size
 
-class _TopicThread:
-    """The thread named after a topic that runs its subscribers' callbacks in delivery order."""
+    def release(self, sub: Subscriber) -> None:
+        if sub in self.subscribers:
+            self.subscribers.remove(sub)
+        if not self.subscribers:
+            self.close()
 
-    def __init__(self, topic: str) -> None:
-        self.queue: deque[tuple[Subscriber, bytes]] = deque()
-        self.waiter = runtime.scheduler.spawn(topic, self._run, ready=self._has_messages)
+    def close(self) -> None:
+        runtime.scheduler.remove_sink(self.handle)
+        self.queue.clear()
+        super().close()
 
     def _has_messages(self) -> bool:
         return bool(self.queue)
 
-    def push(self, sub: Subscriber, data: bytes):
-        """Queue a delivered message, dropping the subscriber's oldest beyond its queue_size."""
-        self.queue.append((sub, data))
-        if sub.queue_size is not None:
-            mine = [entry for entry in self.queue if entry[0] is sub]
-            for entry in mine[:len(mine) - sub.queue_size]:
-                self.queue.remove(entry)
+    def _push(self, data: bytes):
+        """Queue a delivered message, dropping the oldest beyond queue_size."""
+        self.queue.append(data)
+        if self.queue_size is not None:
+            while len(self.queue) > self.queue_size:
+                self.queue.popleft()
         return self.waiter
-
-    def drop(self, sub: Subscriber) -> None:
-        for entry in [e for e in self.queue if e[0] is sub]:
-            self.queue.remove(entry)
 
     def _run(self) -> None:
         while True:
             while self.queue:
-                sub, data = self.queue.popleft()
-                sub._dispatch(data)
+                self._dispatch(self.queue.popleft())
             runtime.scheduler.block(ready=self._has_messages)
+
+    def _dispatch(self, data: bytes) -> None:
+        """Deserialize once and call each subscriber's callback; rospy's receive loop swallows anything that gets
+        past its per-callback ``except Exception`` (sys.exit() in a callback) and reads on."""
+        if core._shutdown_flag or not self.subscribers:
+            return
+        msg = self.data_class()
+        msg.deserialize(data)
+        msg._connection_header = {"callerid": _PUBLISHER_CALLERID, "md5sum": self.data_class._md5sum,
+                                  "topic": self.resolved_name, "type": self.data_class._type,
+                                  "message_definition": self.data_class._full_text, "latching": "0"}
+        try:
+            for sub in list(self.subscribers):
+                _invoke_callback(sub, msg)
+        except BaseException:  # noqa: BLE001 - what rospy's receive loop does
+            pass
+
+
+def _invoke_callback(sub: Subscriber, msg) -> None:
+    """Run one callback; an exception is logged as rospy does and the node carries on."""
+    callback = sub.callback
+    if callback is None:
+        return
+    try:
+        if sub.callback_args is None:
+            callback(msg)
+        else:
+            callback(msg, sub.callback_args)
+    except Exception:
+        if core._shutdown_flag:
+            return
+        excepthook.report_current("callback")
+        core.logerr("bad callback: %s\n%s" % (stable_repr(callback), traceback.format_exc()))
 
 
 def announce_pending() -> None:
     """init_node: tell the grader about topics created before it, in creation order."""
-    for topic in list(_pending):
-        _pending.remove(topic)
-        topic._announce()
+    for registration in list(_pending):
+        _pending.remove(registration)
+        registration.announce()
 
 
 def close_all(reason: str) -> None:
     """Shutdown: every publisher and subscriber is closed (later publishes are dropped)."""
-    for topic in list(_open.values()):
-        topic._close()
+    for registration in list(_open.values()):
+        registration.close()

