@@ -4,6 +4,7 @@ from __future__ import annotations
 import hashlib
 import shutil
 import tempfile
+import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -27,6 +28,8 @@ from grader.submission import (
 )
 
 __all__ = ["GradedSubmission", "SubmissionError", "grade_as_data", "grade_submission", "grade_task"]
+
+STAGE_WAIT_S = 5.0  # longest wait for a killed grading of the same submission to release its unpack folder
 
 Progress = Callable[[str], None]
 
@@ -271,6 +274,11 @@ def _unpacked(submission: bytes, root: Path) -> Iterator[Path]:
     """The zip unpacked at <root>/rosgrade-grade-<content hash>[-n] (-n only when the same content is being graded
     twice at once). Its OWNER_FILE names this process, so whoever started a killed grader can remove it."""
     base = root / f"{STAGE_PREFIX}{hashlib.sha256(submission).hexdigest()[:16]}"
+    # A grading of the same content that was just killed (its Dask worker died, and Dask re-runs the job here) is
+    # still exiting: wait a moment for its folder rather than take another path, which would reach the recordings.
+    deadline = time.monotonic() + STAGE_WAIT_S
+    while not remove_if_abandoned(base) and time.monotonic() < deadline:
+        time.sleep(0.05)
     for attempt in range(1000):
         folder = base if attempt == 0 else base.with_name(f"{base.name}-{attempt}")
         remove_if_abandoned(folder)

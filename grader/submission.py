@@ -108,15 +108,32 @@ def claim(folder: Path) -> None:
     (folder / OWNER_FILE).write_text(str(os.getpid()))
 
 
-def remove_if_abandoned(folder: Path) -> None:
-    """Remove a claimed folder whose owner process is gone (killed, with its machine or its Dask worker)."""
+def remove_if_abandoned(folder: Path) -> bool:
+    """Remove a claimed folder whose owner process is gone (killed, with its machine or its Dask worker).
+
+    True when the folder is not there any more. An owner that is a zombie counts as gone: a grading process whose
+    Dask worker was killed stays one until whoever inherited it reaps it.
+    """
     try:
         owner = int((folder / OWNER_FILE).read_text())
     except (OSError, ValueError):
-        return  # not claimed, or being made right now
+        return not folder.exists()  # absent, or not claimed (yet)
     try:
         os.kill(owner, 0)
     except ProcessLookupError:
-        shutil.rmtree(folder, ignore_errors=True)
+        pass
     except PermissionError:  # alive, as another user
-        return
+        return False
+    else:
+        if not _is_zombie(owner):
+            return False
+    shutil.rmtree(folder, ignore_errors=True)
+    return not folder.exists()
+
+
+def _is_zombie(pid: int) -> bool:
+    """Whether pid has exited but not been reaped (Linux /proc; elsewhere: no)."""
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] in ("Z", "X")
+    except (OSError, IndexError):
+        return False

@@ -279,17 +279,21 @@ class NodeProcess:
     def over_limit(self) -> str | None:
         """Why the node as a whole (every process it started) is over its limits, or None."""
         usage = self.usage()
-        if usage.tasks > self.limits.processes:
-            self.peak_tasks = max(self.peak_tasks, usage.tasks)
-            return (f"started {usage.tasks} processes and threads, over its limit of {self.limits.processes} "
-                    "(a fork bomb or runaway threads?); it was stopped and everything it started killed")
+        self.peak_tasks = max(self.peak_tasks, usage.tasks)
         if usage.memory_bytes > self.limits.memory_mb << 20:
-            return (f"its processes together used more than its memory limit of {self.limits.memory_mb} MB "
-                    f"({usage.memory_bytes >> 20} MB, files in its /tmp and /dev/shm included); it was stopped")
-        if usage.cpu_s > self.limits.cpu_s + 1:
-            return (f"its processes together used more than its CPU-time limit of {self.limits.cpu_s:g} s; "
-                    "it was stopped")
-        return None
+            why = (f"its processes together used more than its memory limit of {self.limits.memory_mb} MB "
+                   f"({usage.memory_bytes >> 20} MB, files in its /tmp and /dev/shm included); it was stopped")
+        elif usage.cpu_s > self.limits.cpu_s + 1:
+            why = (f"its processes together used more than its CPU-time limit of {self.limits.cpu_s:g} s; "
+                   "it was stopped")
+        else:
+            why = None
+        # A node held at its process limit spends its CPU and memory on forking: that is the cause to name, whichever
+        # of the totals tripped first (the rlimit keeps the count itself from going far past the limit).
+        if usage.tasks > self.limits.processes or (why and usage.tasks >= self.limits.processes - 1):
+            return (f"started {usage.tasks} processes and threads, at or over its limit of {self.limits.processes} "
+                    "(a fork bomb or runaway threads?); it was stopped and everything it started killed")
+        return why
 
     # -- signalling ---------------------------------------------------------------------------------------------
     def signal_group(self, sig: int) -> None:

@@ -91,8 +91,10 @@ def test_children_together_over_the_memory_limit_are_stopped(tmp_path):
 
 def test_children_together_over_the_cpu_limit_are_stopped(tmp_path):
     limits = Limits(wall_s=30, silent_wall_s=5, cpu_s=2, memory_mb=300, processes=32, output_bytes=200_000)
+    # The parent steps every 10 ms of sim time, so 900 s take several wall seconds: long enough for the 1 s usage
+    # check to see the children's CPU time add up, however fast this machine runs the lockstep.
     case = run_case("spinning_children", tmp_path, limits=limits,
-                    scenario=Scenario(duration=120.0, shutdown_at=118.0))
+                    scenario=Scenario(duration=900.0, shutdown_at=898.0))
     assert case.node.status == "killed_by_limit", case.node.message
     assert "CPU-time limit" in case.node.message
 

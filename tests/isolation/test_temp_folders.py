@@ -13,7 +13,7 @@ import pytest
 from grader import batch, grading
 from grader.runtime import session
 from grader.runtime.spec import NodeSpec, RunSpec
-from grader.submission import OWNER_FILE, STAGE_PREFIX, open_submission
+from grader.submission import OWNER_FILE, STAGE_PREFIX, open_submission, remove_if_abandoned
 from sim import Scenario
 
 NODE = "import rospy\nrospy.init_node('tidy')\nprint('ran')\n"
@@ -95,3 +95,52 @@ def test_a_batch_worker_stopped_at_its_timeout_leaves_nothing(tmp_path, temp_dir
     result = batch.run_batch(students, tmp_path / "out", jobs=1, timeout_s=2.0, task_ids=["move_circle"])
     assert [r.status for r in result.results] == ["timeout"]
     assert list(temp_dir.iterdir()) == []
+
+
+def _zombie() -> int:
+    """A child that has exited and is not reaped yet (what a killed Dask worker's grading process becomes)."""
+    pid = os.fork()
+    if pid == 0:
+        os._exit(0)
+    deadline = time.monotonic() + 10
+    while Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z":
+        assert time.monotonic() < deadline, "the child did not exit"
+        time.sleep(0.01)
+    return pid
+
+
+def test_a_folder_owned_by_a_zombie_counts_as_abandoned(tmp_path):
+    folder = tmp_path / f"{STAGE_PREFIX}0123456789abcdef"
+    folder.mkdir()
+    pid = _zombie()
+    try:
+        (folder / OWNER_FILE).write_text(str(pid))
+        assert remove_if_abandoned(folder) and not folder.exists()
+    finally:
+        os.waitpid(pid, 0)
+
+
+def test_a_folder_owned_by_a_live_process_is_kept(tmp_path):
+    folder = tmp_path / f"{STAGE_PREFIX}0123456789abcdef"
+    folder.mkdir()
+    (folder / OWNER_FILE).write_text(str(os.getpid()))
+    assert not remove_if_abandoned(folder) and folder.exists()
+
+
+def test_a_regrade_after_a_killed_grading_unpacks_at_the_same_path(tmp_path):
+    """The path reaches the recordings: a job Dask re-runs after its worker died must not get another one."""
+    archive = tmp_path / "student.zip"
+    with zipfile.ZipFile(archive, "w") as handle:
+        handle.writestr("move_circle.py", NODE)
+    submission = archive.read_bytes()
+    with grading._unpacked(submission, tmp_path) as first:
+        expected = first
+    left = expected.parent
+    left.mkdir()
+    pid = _zombie()
+    try:
+        (left / OWNER_FILE).write_text(str(pid))  # the killed grading's folder, still there
+        with grading._unpacked(submission, tmp_path) as again:
+            assert again == expected
+    finally:
+        os.waitpid(pid, 0)
