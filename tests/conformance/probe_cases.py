@@ -385,6 +385,31 @@ CASES += [
         "set_param(None) !! builtins.TypeError: cannot marshal None unless allow_none is enabled",
         "has ~none False",
     ), stderr_empty=True),
+    # a thread looping until shutdown: Ctrl+C runs the hook (thread still alive), then the thread's rate.sleep() raises
+    Case("p27_thread_shutdown", "p27_thread_shutdown.py", shutdown_at=1.55, duration=4.0, compare_commands=True,
+         tolerance_s=0.02, stdout=(*_THREAD_LINES[:11], "on_shutdown hook; thread alive True",
+                                   "thread caught ROSInterruptException ROS shutdown request",
+                                   "thread ended; is_shutdown True", "main done"), stderr_empty=True),
+    Case("p28_subscriber_types", "p28_subscriber_types.py", duration=3.0, stdout=(
+        "first subscriber got ['Odometry']",
+        "second subscriber (declared PoseStamped) got ['Odometry']",
+        "declared types Odometry PoseStamped nav_msgs/Odometry geometry_msgs/PoseStamped",
+        "connections 1 1",
+    ), stderr_empty=True),
+    Case("p29_numpy_values", "p29_numpy_values.py", duration=3.0, stdout=(
+        "Twist linear.x=np.int64(2) published",
+        "Int32 data=np.int64(7) published",
+        "Int32 data=np.float64(7.0) !! ROSSerializationException field data must be an integer type",
+        "Int32 data=7.5 !! ROSSerializationException field data must be an integer type",
+        "String data=np.str_('hi') published",
+        "received [('int', 7, 'int'), ('str', 'hi', 'str'), ('twist', 2.0, 'float')]",
+    ), stderr_empty=True),
+    Case("p30_tf2_geometry", "p30_tf2_geometry.py", duration=2.0, stdout=(
+        "point odom 12 500 [1.0, 3.0, 0.75]",
+        "vector odom [-2.0, 1.0, 0.0]",
+        "pose odom [1.0, 4.0, 0.5] yaw deg 135.0",
+        "types PoseStamped PointStamped",
+    ), stderr_empty=True),
     Case("p_eco_modules", "p_eco_modules.py", duration=6.0, stdout=(
         "lookup odom base_footprint matches /odom True stamp True",
         "latest stamped True",

@@ -119,6 +119,12 @@ def test_a_single_command_drives_the_robot_when_latched_or_sent_once_connected(t
     # the latched message waited for the connection: nothing was lost, and the diagnostics say nothing about it
     assert not [t.topic for t in rec.topics() if t.topic.startswith("/rosgrade/lost")]
     assert not [note for note in result.diagnostics if "lost" in note]
+    # the recording marks the channel as latched as real bags do (the ROS 1 connection header's "1"/"0")
+    from mcap.reader import make_reader
+    with open(tmp_path / "run.mcap", "rb") as f:
+        channels = make_reader(f).get_summary().channels.values()
+    latching = {c.metadata["latching"] for c in channels if c.topic == "/cmd_vel"}
+    assert latching == {"1" if script == "latched_once.py" else "0"}
 
 
 def test_other_clocks_and_timed_waits_follow_sim_time(tmp_path):
