@@ -7,7 +7,7 @@ import tempfile
 import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from grader import timing
@@ -23,6 +23,7 @@ from grader.runtime.scripts import candidates
 from grader.runtime.parallel import Outcome, Run, run_all
 from grader.runtime.session import RunError, node_log_path
 from grader.scoring import score_task
+from grader.taskfit import fitting_tasks, in_folder
 from grader.submission import (
     STAGE_PREFIX, SubmissionError, claim, links_leaving, open_submission, remove_if_abandoned, unzip,
 )
@@ -59,7 +60,10 @@ def _present(folder: Path, rubric: Rubric) -> bool:
 
 
 def _present_tasks(folder: Path, rubrics: Mapping[str, Rubric]) -> list[str]:
-    return [task for task, rubric in rubrics.items() if _present(folder, rubric)]
+    """The tasks whose files are in the submission; a script both a TurtleBot and a turtlesim task would run counts
+    for the one whose world its topics name (``grader.taskfit``)."""
+    return fitting_tasks([task for task, rubric in rubrics.items() if _present(folder, rubric)], rubrics,
+                         in_folder(folder))
 
 
 def _node_spec(script: Path, node: Node) -> NodeSpec:
@@ -119,6 +123,11 @@ def _hidden_text(nodes: tuple[NodeSpec, ...], log: Path) -> list[str]:
             for index, spec in enumerate(nodes) if spec.output == "log" and node_log_path(log, index).exists()]
 
 
+def _typed(nodes: tuple[NodeSpec, ...], stdin: str | None) -> tuple[NodeSpec, ...]:
+    """The nodes with a scenario's stdin (other values typed in), or as they are when it gives none."""
+    return nodes if stdin is None else tuple(replace(spec, stdin=stdin) for spec in nodes)
+
+
 @dataclass
 class _TaskPlan:
     """One task ready to run: its nodes, what was found about them, and its scenario runs."""
@@ -149,7 +158,8 @@ def _plan_task(folder: Path, rubric: Rubric, out_dir: Path) -> _TaskPlan | TaskR
     if task_dir.exists():
         shutil.rmtree(task_dir)
     task_dir.mkdir(parents=True)
-    runs = [Run(RunSpec(scenario=scenario, nodes=nodes, limits=rubric.limits, name=scenario.name),
+    runs = [Run(RunSpec(scenario=scenario, nodes=_typed(nodes, scenario.stdin), limits=rubric.limits,
+                        name=scenario.name),
                 task_dir / f"{scenario.name}.mcap", task_dir / f"{scenario.name}.log") for scenario in rubric.scenarios]
     return _TaskPlan(rubric, nodes, findings, runs)
 

@@ -68,6 +68,10 @@ class Scenario(WorldScenario):
 
     name: str = Field(pattern=_ID)
     description: str = ""
+    stdin: str | None = None  # typed into every node of this run instead of the node's own `stdin`
+    # What this run asks for (e.g. the distance its stdin types): metric parameters of the same name, for every
+    # criterion whose metric takes them; they override the criterion's own `params` on this scenario.
+    params: dict[str, Any] = {}
 
 
 class Node(_Model):
@@ -231,6 +235,13 @@ class Criterion(_Model):
         """The validated parameters for this criterion's metric."""
         return self._params
 
+    def params_for(self, scenario: Scenario) -> MetricParams:
+        """The metric's parameters on one scenario: the criterion's, overridden by the scenario's that it takes."""
+        taken = {k: v for k, v in scenario.params.items() if k in self._metric.params.model_fields}
+        if not taken:
+            return self._params
+        return self._metric.params.model_validate({**self.params, **taken})
+
     @property
     def expected_text(self) -> str:
         """What the feedback calls the expected value: the rubric's words, else the bounds."""
@@ -289,10 +300,22 @@ class Rubric(_Model):
             for name in c.scenarios or []:
                 if name not in by_name:
                     raise ValueError(f"criterion {c.id!r} names scenario {name!r}; expected one of {', '.join(names)}")
+            for s in self.scenario_list(c):
+                try:
+                    c.params_for(s)
+                except ValidationError as e:
+                    raise ValueError(f"scenario {s.name!r}: params for criterion {c.id!r}: "
+                                     + "; ".join(_brief(err) for err in e.errors())) from None
             if c.metric_def.needs_shutdown:
                 for s in self.scenario_list(c):
                     if s.shutdown_at is None:
                         raise ValueError(f"criterion {c.id!r} checks the shutdown, but scenario {s.name!r} has no shutdown_at")
+        for s in self.scenarios:
+            unused = set(s.params) - {k for c in self.criteria if c.scenarios is None or s.name in c.scenarios
+                                      for k in c.metric_def.params.model_fields}
+            if unused:
+                raise ValueError(f"scenario {s.name!r}: params {', '.join(sorted(unused))} are taken by no metric of "
+                                 "its criteria; check the spelling")
         return self
 
     @property

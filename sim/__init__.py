@@ -3,7 +3,8 @@ from __future__ import annotations
 
 from sim.profile import ProfileError, RobotProfile, available_robots, load_robot
 from sim.samples import (ColorSample, CommandSample, GroundTruthSample, ImuSample, JointStateSample, LogSample,
-                         OdometrySample, Sample, ScanSample, TransformSample, TurtlePoseSample, WorldTopic)
+                         OdometrySample, Sample, ScanSample, ServiceResult, TransformSample, TurtlePoseSample,
+                         WorldService, WorldTopic)
 from sim.scenario import Imperfections, Pose2D, Scenario, ScriptedCommand
 from sim.turtlesim import TurtlesimError, TurtlesimWorld
 from sim.world import SimError, World
@@ -27,11 +28,13 @@ __all__ = [
     "RobotProfile",
     "Sample",
     "ScanSample",
+    "ServiceResult",
     "Scenario",
     "ScriptedCommand",
     "SimError",
     "TransformSample",
     "World",
+    "WorldService",
     "WorldTopic",
     "available_robots",
     "load_robot",

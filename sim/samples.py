@@ -151,5 +151,28 @@ class WorldTopic:
     shared: bool = False
 
 
+@dataclass(frozen=True, slots=True)
+class WorldService:
+    """A service the world serves: its resolved name and its srv type (``turtlesim/Spawn``)."""
+
+    name: str
+    type: str
+
+
+@dataclass(frozen=True, slots=True)
+class ServiceResult:
+    """What a world's service handler returned: success and the response's field values (plain Python values),
+    plus what the world logged while handling it (``LogSample`` on /rosout, at the call's time).
+
+    ``ok`` False is a handler that failed: a roscpp callback returning false (``error`` empty, as roscpp sends no
+    text then) or throwing (``error`` is the exception's text, which roscpp sends to the caller).
+    """
+
+    ok: bool
+    response: dict[str, object]
+    samples: tuple[LogSample, ...] = ()
+    error: str = ""
+
+
 Sample = (OdometrySample | TransformSample | GroundTruthSample | CommandSample | ImuSample | JointStateSample
           | ScanSample | TurtlePoseSample | ColorSample | LogSample)

@@ -6,15 +6,24 @@ fixed dt of 0.016 s; teleports queued by services are applied first, then a comm
 θ += ω·dt (wrapped to [−π, π)), then x, y move along the new θ, then the turtle is clamped to the canvas. Positions
 are kept in the window's screen coordinates (y down) as turtle.cpp does, so the published y is ``height - y``
 computed the same way. The one deliberate difference: the 1 s timeout counts sim time, not wall time.
+
+Services (``services``, ``call``) are turtle_frame.cpp's ``/clear``, ``/reset``, ``/spawn``, ``/kill`` and each
+turtle's ``set_pen``, ``teleport_absolute`` and ``teleport_relative``, handled at once at the current time; turtlesim
+answers them in its next update's ``spinOnce``, before moving the turtles, which has the same effect on the turtles.
+The background is always the ``background_r/g/b`` defaults: parameters live in each node here, so a node's
+``set_param`` cannot reach the world.
 """
 from __future__ import annotations
 
 import math
-from collections.abc import Collection
+import string
+import struct
+from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property, partial
 
-from sim.samples import (ColorSample, CommandSample, GroundTruthSample, LogSample, Sample, TurtlePoseSample,
-                         WorldTopic)
+from sim.samples import (ColorSample, CommandSample, GroundTruthSample, LogSample, Sample, ServiceResult,
+                         TurtlePoseSample, WorldService, WorldTopic)
 from sim.scenario import Scenario, ScenarioTimes
 from sim.turtle_canvas import CANVAS_PX, DEFAULT_BACKGROUND, METER_PX, Canvas, Rgb
 
@@ -27,12 +36,17 @@ TURTLE_PI = 3.14159265
 DEFAULT_PEN = (179, 184, 255)
 DEFAULT_PEN_WIDTH = 3
 DEFAULT_TURTLE = "turtle1"
+DEFAULT_COMMAND_TOPIC = f"/{DEFAULT_TURTLE}/cmd_vel"  # where a scripted command without a topic goes
 GROUND_TRUTH_TOPIC = "/ground_truth/odom"
 ROSOUT = "/rosout"
 NODE_NAME = "/turtlesim"
 WARN = 4
 INFO = 2
 ERROR = 8
+# Characters roscpp's names::validate accepts after the first one of a graph resource name.
+_NAME_CHARS = frozenset(string.ascii_letters + string.digits + "/_")
+
+Request = Mapping[str, object]
 
 
 class TurtlesimError(Exception):
@@ -61,6 +75,22 @@ class Turtle:
         """Canvas y, up (what turtlesim/Pose says)."""
         return CANVAS_M - self.y_screen
 
+    @cached_property
+    def namespace(self) -> str:
+        """Where its topics and services live: its name resolved in turtlesim's namespace, as ros::NodeHandle does
+        (``turtle2`` → ``/turtle2``, ``~t`` → ``/turtlesim/t``)."""
+        if self.name.startswith("~"):
+            resolved = f"{NODE_NAME}/{self.name[1:]}"
+        else:
+            resolved = self.name if self.name.startswith("/") else f"/{self.name}"
+        while "//" in resolved:
+            resolved = resolved.replace("//", "/")
+        return resolved.rstrip("/") or "/"
+
+    def topic(self, leaf: str) -> str:
+        """The full name of one of its topics or services (``pose``, ``set_pen``)."""
+        return f"{self.namespace.rstrip('/')}/{leaf}"
+
 
 class TurtlesimWorld(ScenarioTimes):
     """One run of turtlesim: ``command`` a turtle, ``advance_to`` a time, collect what it published on the way."""
@@ -70,7 +100,8 @@ class TurtlesimWorld(ScenarioTimes):
         self.mode_name = "kinematic"
         self.canvas = Canvas(DEFAULT_BACKGROUND)
         self.turtles: dict[str, Turtle] = {}
-        self._spawned = 0
+        self._id_counter = 0  # turtle_frame.cpp's id_counter_: the N of the last turtleN it named
+        self._time_ns = 0
         self._spawn_default()
         if "initial_pose" in scenario.model_fields_set:  # a turtle moved away from the centre before the run
             pose = scenario.initial_pose
@@ -83,7 +114,6 @@ class TurtlesimWorld(ScenarioTimes):
         self._script = [(scenario.start_ns + command.t_ns, command) for command in scenario.script]
         self._next_script = 0
         self._updates = 0  # updates happen at every multiple of UPDATE_NS after 0
-        self._time_ns = 0
         self._pending: list[Sample] = []
         self._run(scenario.start_ns, self._pending, emit=False)
 
@@ -94,9 +124,9 @@ class TurtlesimWorld(ScenarioTimes):
         """Each turtle's pose and colour sensor, turtle1's ground truth, and the /rosout warnings."""
         rate = 1e9 / UPDATE_NS
         declared = []
-        for name in self.turtles:
-            declared.append(WorldTopic(f"/{name}/pose", "turtlesim/Pose", rate))
-            declared.append(WorldTopic(f"/{name}/color_sensor", "turtlesim/Color", rate))
+        for turtle in self.turtles.values():
+            declared.append(WorldTopic(turtle.topic("pose"), "turtlesim/Pose", rate))
+            declared.append(WorldTopic(turtle.topic("color_sensor"), "turtlesim/Color", rate))
         declared.append(WorldTopic(GROUND_TRUTH_TOPIC, "nav_msgs/Odometry", rate, to_nodes=False))
         declared.append(WorldTopic(ROSOUT, "rosgraph_msgs/Log", 0, to_nodes=False, shared=True))
         return tuple(declared)
@@ -108,8 +138,33 @@ class TurtlesimWorld(ScenarioTimes):
 
     @property
     def command_topics(self) -> tuple[str, ...]:
-        """Each live turtle's cmd_vel (the first is turtle1's, where scripted commands go by default)."""
-        return tuple(f"/{name}/cmd_vel" for name in self.turtles)
+        """Each live turtle's cmd_vel (scripted commands without a topic go to turtle1's)."""
+        return tuple(turtle.topic("cmd_vel") for turtle in self.turtles.values())
+
+    @property
+    def sim_clock(self) -> bool:
+        """turtlesim publishes no /clock and nothing sets /use_sim_time: nodes read the wall clock (here it runs with
+        world time from a fixed epoch, so rospy.Time.now() is never 0, as on a real turtlesim)."""
+        return False
+
+    @property
+    def services(self) -> tuple[WorldService, ...]:
+        """turtle_frame.cpp's four, then each live turtle's three (turtle.cpp)."""
+        declared = [WorldService("/clear", "std_srvs/Empty"), WorldService("/reset", "std_srvs/Empty"),
+                    WorldService("/spawn", "turtlesim/Spawn"), WorldService("/kill", "turtlesim/Kill")]
+        for turtle in self.turtles.values():
+            declared += [WorldService(turtle.topic("set_pen"), "turtlesim/SetPen"),
+                         WorldService(turtle.topic("teleport_absolute"), "turtlesim/TeleportAbsolute"),
+                         WorldService(turtle.topic("teleport_relative"), "turtlesim/TeleportRelative")]
+        return tuple(declared)
+
+    def call(self, name: str, request: Request) -> ServiceResult:
+        """Handle one request to the service ``name`` now, as turtlesim's callback does; ``request`` holds the
+        request's fields by name. TurtlesimError for a service turtlesim does not serve."""
+        handler = self._handlers().get(name)
+        if handler is None:
+            raise TurtlesimError(f"turtlesim serves no service {name!r}")
+        return handler(request)
 
     def command(self, topic: str, linear: tuple[float, float, float] = (0.0, 0.0, 0.0),
                 angular: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> bool:
@@ -168,16 +223,17 @@ class TurtlesimWorld(ScenarioTimes):
         while self._next_script < len(self._script) and self._script[self._next_script][0] <= t_ns:
             due_ns, command = self._script[self._next_script]
             self._next_script += 1
-            topic = command.topic or self.command_topics[0]
+            topic = command.topic or DEFAULT_COMMAND_TOPIC
             turtle = self._turtle_of(topic)
             if turtle is not None:
                 self._receive(turtle, due_ns, command.linear, command.angular)
             out.append(CommandSample(due_ns, topic, command.linear, command.angular))
 
     def _update(self, t_ns: int, out: list[Sample] | None) -> None:
-        """One tick of turtle_frame.cpp: every turtle moves, publishes its pose and colour, and draws."""
-        for turtle in list(self.turtles.values()):
-            self._move(turtle, t_ns, out)
+        """One tick of turtle_frame.cpp: every turtle moves, publishes its pose and colour, and draws, in the order
+        of their names (turtle_frame.cpp keeps them in a std::map)."""
+        for name in sorted(self.turtles):
+            self._move(self.turtles[name], t_ns, out)
 
     def _move(self, turtle: Turtle, t_ns: int, out: list[Sample] | None) -> None:
         """turtle.cpp's ``Turtle::update`` for one turtle."""
@@ -209,11 +265,11 @@ class TurtlesimWorld(ScenarioTimes):
 
         speed = math.sqrt(turtle.linear_x ** 2 + turtle.linear_y ** 2)
         # The colour is read before this update's line is drawn, as turtle.cpp does.
-        color = self.canvas.color_at(turtle.x * METER_PX, turtle.y_screen * METER_PX)
+        color = self._color_under(turtle)
         if out is not None:
-            out.append(TurtlePoseSample(t_ns, f"/{turtle.name}/pose", turtle.x, turtle.y, theta, speed,
+            out.append(TurtlePoseSample(t_ns, turtle.topic("pose"), turtle.x, turtle.y, theta, speed,
                                         turtle.angular))
-            out.append(ColorSample(t_ns, f"/{turtle.name}/color_sensor", *color))
+            out.append(ColorSample(t_ns, turtle.topic("color_sensor"), *color))
             if turtle.name == DEFAULT_TURTLE:
                 half = theta / 2
                 out.append(GroundTruthSample(
@@ -222,17 +278,26 @@ class TurtlesimWorld(ScenarioTimes):
                     (0.0, 0.0, turtle.angular)))
         self._draw(turtle, old)
 
+    def _color_under(self, turtle: Turtle) -> Rgb:
+        """The canvas pixel under the turtle; a position that is not a number (a NaN command or teleport) reads what
+        Qt's ``QImage::pixel`` returns off the image, 12345 as an RGB value."""
+        if not (math.isfinite(turtle.x) and math.isfinite(turtle.y_screen)):
+            return (0, 12345 >> 8 & 0xFF, 12345 & 0xFF)
+        return self.canvas.color_at(turtle.x * METER_PX, turtle.y_screen * METER_PX)
+
     def _draw(self, turtle: Turtle, old: tuple[float, float]) -> None:
-        """The pen line from ``old`` to where the turtle is now (nothing when the pen is off or it did not move)."""
-        if turtle.pen_on and (turtle.x, turtle.y_screen) != old:
+        """The pen line from ``old`` to where the turtle is now (nothing when the pen is off, it did not move, or an
+        end is not a finite point: Qt draws nothing there either)."""
+        ends = (*old, turtle.x, turtle.y_screen)
+        if turtle.pen_on and (turtle.x, turtle.y_screen) != old and all(math.isfinite(v) for v in ends):
             self.canvas.line((old[0] * METER_PX, old[1] * METER_PX),
                              (turtle.x * METER_PX, turtle.y_screen * METER_PX), turtle.pen, turtle.pen_width)
 
     # -- turtles -------------------------------------------------------------------------------------------------
 
     def _turtle_of(self, topic: str) -> Turtle | None:
-        name = topic[1:].rsplit("/", 1)[0] if topic.endswith("/cmd_vel") else ""
-        return self.turtles.get(name)
+        """The live turtle whose cmd_vel ``topic`` is, if any."""
+        return next((t for t in self.turtles.values() if t.topic("cmd_vel") == topic), None)
 
     @staticmethod
     def _receive(turtle: Turtle, t_ns: int, linear: tuple[float, float, float],
@@ -240,9 +305,105 @@ class TurtlesimWorld(ScenarioTimes):
         turtle.last_command_ns = t_ns
         turtle.linear_x, turtle.linear_y, turtle.angular = float(linear[0]), float(linear[1]), float(angular[2])
 
-    def _spawn_default(self) -> None:
+    def _spawn_default(self) -> LogSample:
         """turtle1 at the centre, heading east (turtlesim's start and /reset)."""
-        self._spawned = 1
         centre = CANVAS_M / 2.0
-        self.turtles[DEFAULT_TURTLE] = Turtle(DEFAULT_TURTLE, centre, CANVAS_M - centre, 0.0)
+        return self._spawn("", centre, centre, 0.0)[1]
+
+    def _spawn(self, name: str, x: float, y: float, theta: float) -> tuple[str, LogSample]:
+        """turtle_frame.cpp's ``spawnTurtle`` for a free or empty name: an empty one becomes the next free turtleN."""
+        if not name:
+            self._id_counter += 1
+            while f"turtle{self._id_counter}" in self.turtles:
+                self._id_counter += 1
+            name = f"turtle{self._id_counter}"
+        self.turtles[name] = Turtle(name, x, CANVAS_M - y, theta)
+        # spawnTurtle takes floats: its log line prints them rounded to float32.
+        x32, y32, theta32 = struct.unpack("<3f", struct.pack("<3f", x, y, theta))
+        return name, self._log(INFO, f"Spawning turtle [{name}] at x=[{x32:f}], y=[{y32:f}], theta=[{theta32:f}]")
+
+    def _log(self, level: int, msg: str) -> LogSample:
+        """A line turtlesim logs on /rosout now."""
+        return LogSample(self._time_ns, ROSOUT, level, NODE_NAME, msg)
+
+    # -- services (turtle_frame.cpp, turtle.cpp) ---------------------------------------------------------------
+
+    def _handlers(self) -> dict[str, Callable[[Request], ServiceResult]]:
+        """Each served service's handler, by resolved name."""
+        handlers: dict[str, Callable[[Request], ServiceResult]] = {
+            "/clear": self._clear, "/reset": self._reset, "/spawn": self._spawn_service, "/kill": self._kill}
+        for turtle in self.turtles.values():
+            handlers[turtle.topic("set_pen")] = partial(self._set_pen, turtle)
+            handlers[turtle.topic("teleport_absolute")] = partial(self._teleport, turtle, False)
+            handlers[turtle.topic("teleport_relative")] = partial(self._teleport, turtle, True)
+        return handlers
+
+    def _clear(self, request: Request) -> ServiceResult:  # noqa: ARG002 -- std_srvs/Empty
+        """/clear: the canvas back to the background."""
+        self.canvas.clear()
+        return ServiceResult(True, {}, (self._log(INFO, "Clearing turtlesim."),))
+
+    def _reset(self, request: Request) -> ServiceResult:  # noqa: ARG002 -- std_srvs/Empty
+        """/reset: every turtle gone, names counted from 1 again, turtle1 back at the centre, the canvas cleared."""
+        said = self._log(INFO, "Resetting turtlesim.")
+        self.turtles.clear()
+        self._id_counter = 0
+        spawned = self._spawn_default()
+        self.canvas.clear()
+        return ServiceResult(True, {}, (said, spawned))
+
+    def _spawn_service(self, request: Request) -> ServiceResult:
+        """/spawn: a new turtle with its own topics and services; a taken name fails, as does one roscpp refuses."""
+        name = str(request["name"])
+        if name in self.turtles:
+            return ServiceResult(False, {}, (self._log(ERROR, f"A turtled named [{name}] already exists"),))
+        problem = _name_problem(name)
+        if problem:
+            said = self._log(ERROR, f"Exception thrown while processing service call: {problem}")
+            return ServiceResult(False, {}, (said,), error=problem)
+        name, said = self._spawn(name, float(request["x"]), float(request["y"]), float(request["theta"]))
+        return ServiceResult(True, {"name": name}, (said,))
+
+    def _kill(self, request: Request) -> ServiceResult:
+        """/kill: the turtle, its topics and its services are gone; an unknown name fails."""
+        name = str(request["name"])
+        if self.turtles.pop(name, None) is None:
+            said = self._log(ERROR, f"Tried to kill turtle [{name}], which does not exist")
+            return ServiceResult(False, {}, (said,))
+        return ServiceResult(True, {})
+
+    @staticmethod
+    def _set_pen(turtle: Turtle, request: Request) -> ServiceResult:
+        """set_pen: ``off`` lifts the pen and keeps its colour; otherwise a new pen (width 0 keeps Qt's default
+        cosmetic pen, 1 px wide)."""
+        turtle.pen_on = not request["off"]
+        if request["off"]:
+            return ServiceResult(True, {})
+        turtle.pen = (int(request["r"]), int(request["g"]), int(request["b"]))
+        turtle.pen_width = int(request["width"]) or 1
+        return ServiceResult(True, {})
+
+    @staticmethod
+    def _teleport(turtle: Turtle, relative: bool, request: Request) -> ServiceResult:
+        """teleport_absolute / teleport_relative: queued, applied at the start of the turtle's next update."""
+        if relative:
+            turtle.teleports.append((True, float(request["linear"]), 0.0, float(request["angular"])))
+        else:
+            turtle.teleports.append((False, float(request["x"]), float(request["y"]), float(request["theta"])))
+        return ServiceResult(True, {})
+
+
+def _name_problem(name: str) -> str:
+    """roscpp's ``names::validate`` message for a name a NodeHandle refuses ('' when it is valid or empty)."""
+    if not name:
+        return ""
+    first = name[0]
+    if not (first.isascii() and first.isalpha()) and first not in "/~":
+        return (f"Character [{first}] is not valid as the first character in Graph Resource Name [{name}].  "
+                "Valid characters are a-z, A-Z, / and in some cases ~.")
+    for i, c in enumerate(name[1:], start=1):
+        if c not in _NAME_CHARS:
+            return (f"Character [{c}] at element [{i}] is not valid in Graph Resource Name [{name}].  "
+                    "Valid characters are a-z, A-Z, 0-9, / and _.")
+    return ""
 

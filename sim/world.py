@@ -7,7 +7,7 @@ ticks and the 50 Hz ground truth. Same scenario → same bits, on one machine an
 from __future__ import annotations
 
 import math
-from collections.abc import Collection
+from collections.abc import Collection, Mapping
 
 import mujoco
 
@@ -16,7 +16,8 @@ from sim.clock import last_step_at, step_ns, steps_per_tick
 from sim.model import build_model
 from sim.odometry import Estimate, WheelOdometry, WorldPoseOdometry, ground_truth, quaternion_yaw
 from sim.profile import RobotProfile, covariance_matrix, load_robot
-from sim.samples import CommandSample, GroundTruthSample, OdometrySample, Sample, TransformSample, WorldTopic
+from sim.samples import (CommandSample, GroundTruthSample, OdometrySample, Sample, ServiceResult, TransformSample,
+                         WorldService, WorldTopic)
 from sim.scenario import Scenario, ScenarioTimes
 from sim.sensors import Imu, JointStates, Scanner
 
@@ -125,6 +126,20 @@ class World(ScenarioTimes):
     def command_topics(self) -> tuple[str, ...]:
         """Topics the robot's base listens on (the first is where scripted commands go by default)."""
         return self._topics
+
+    @property
+    def sim_clock(self) -> bool:
+        """Gazebo publishes /clock and its launch files set /use_sim_time: nodes run on the simulated clock."""
+        return True
+
+    @property
+    def services(self) -> tuple[WorldService, ...]:
+        """A robot in MuJoCo serves no services (Gazebo's are not simulated)."""
+        return ()
+
+    def call(self, name: str, request: Mapping[str, object]) -> ServiceResult:
+        """There is no service to call: a caller should look in ``services`` first."""
+        raise SimError(f"the robot world serves no service {name!r} (request {dict(request)!r})")
 
     def command(self, topic: str, linear: tuple[float, float, float] = (0.0, 0.0, 0.0), angular: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> bool:
         """A Twist received now on ``topic``; it takes effect on the next control tick. False if the base does not listen there."""

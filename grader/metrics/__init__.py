@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 from grader.metrics import (
-    circle, final_pose, log_lines, loops, pose_print, shutdown, square, stop, timing, velocity,
+    circle, coverage, final_pose, goal, log_lines, loops, polygon, pose_print, shutdown, square, stop, timing,
+    turtle_rotation, turtle_stop, turtle_travel, velocity, wall_hits,
 )
 from grader.metrics.base import Measurement, Metric, MetricError, MetricParams, TrajectoryParams
 from grader.metrics.run import Commands, OutputLine, RunData, RunInfo, Trajectory
@@ -10,7 +11,8 @@ from grader.metrics.run import Commands, OutputLine, RunData, RunInfo, Trajector
 METRICS: dict[str, Metric] = {
     m.name: m for m in (
         circle.METRIC, square.METRIC, velocity.METRIC, shutdown.METRIC, pose_print.METRIC, stop.METRIC,
-        loops.METRIC, timing.METRIC, final_pose.METRIC, log_lines.METRIC,
+        loops.METRIC, timing.METRIC, final_pose.METRIC, log_lines.METRIC, turtle_travel.METRIC,
+        turtle_rotation.METRIC, turtle_stop.METRIC, polygon.METRIC, goal.METRIC, coverage.METRIC, wall_hits.METRIC,
     )
 }
 

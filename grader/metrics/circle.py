@@ -102,6 +102,8 @@ def measure(run: RunData, params: Params) -> Measurement:
         "revolutions": fit.revolutions, "arc_length": driven,
         "cmd_linear": v, "cmd_angular": w,
         "cmd_radius": abs(v / w) if w else math.inf,
+        # How far the driven radius is from the one the commands ask for (v/ω), as a share of it.
+        "radius_error_rel": abs(fit.radius - abs(v / w)) / abs(v / w) if v and w else math.inf,
         "swapped_radius": abs(w / v) if v else math.inf,
         "needed_angular": abs(v) / params.target_radius if params.target_radius else math.nan,
     }
@@ -112,7 +114,7 @@ METRIC = Metric(
     params=Params,
     quantities=frozenset({
         "radius", "centre_x", "centre_y", "rms_residual", "revolutions", "arc_length",
-        "cmd_linear", "cmd_angular", "cmd_radius", "swapped_radius", "needed_angular",
+        "cmd_linear", "cmd_angular", "cmd_radius", "radius_error_rel", "swapped_radius", "needed_angular",
     }),
     measure=measure,
 )

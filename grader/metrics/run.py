@@ -10,6 +10,8 @@ from typing import Any, Literal
 import numpy as np
 
 DRIVER_CALLERID = "/rosgrade_driver"  # the grader's scripted driver; its commands are not the student's
+TURTLE_POSE_TOPIC = "/turtle1/pose"  # turtlesim's pose of turtle1 (turtlesim/Pose), its only odometry
+TURTLESIM_ID = "/gazebo"  # the callerid the world's channels are recorded with (turtlesim's too; no node may take it)
 RUN_KEYS = ("shutdown_requested_s", "exit_code", "exit_signal", "status", "ended_s")
 
 
@@ -164,10 +166,9 @@ class RunData:
     @classmethod
     def from_recording(cls, recording: Any, start_time: float = 0.0, shutdown_at: float | None = None) -> RunData:
         """Adapt a ``grader.recording.Recording`` (documented API in DEVELOPERS.md) into arrays."""
-        odom = recording.odometry()
         truth = recording.ground_truth()
         return cls(
-            odometry=_trajectory(odom, "odometry"),
+            odometry=_odometry(recording),
             ground_truth=None if truth is None else _trajectory(truth, "ground_truth"),
             commands=_student_commands(recording.commands()),
             lines=_lines(recording),
@@ -196,6 +197,14 @@ def _lines(recording: Any) -> tuple[OutputLine, ...]:
         level = None if entry is None else ROSOUT_LEVELS.get(int(entry.level))
         lines.append(OutputLine(float(t), str(stream), str(text), level))
     return tuple(lines)
+
+
+def _odometry(recording: Any) -> Trajectory:
+    """What the node could see of its pose: nav_msgs/Odometry, or in turtlesim (which has none) turtle1/pose."""
+    if getattr(recording, "odometry_topic", lambda: "")() is None:
+        poses = [(t_ns / 1e9, m.x, m.y, m.theta) for t_ns, m in recording.messages(TURTLE_POSE_TOPIC, TURTLESIM_ID)]
+        return Trajectory.of(*(zip(*poses) if poses else ([], [], [], [])), source="odometry")
+    return _trajectory(recording.odometry(), "odometry")
 
 
 def _trajectory(series: Any, source: str) -> Trajectory:

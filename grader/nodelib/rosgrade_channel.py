@@ -9,7 +9,7 @@ import json
 import os
 import struct
 
-PROTOCOL = 2
+PROTOCOL = 3
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000
@@ -34,17 +34,26 @@ LOG = 7
 OUTPUT = 8
 EXCEPTION = 9
 WAIT = 10
+CALL = 11
 # grader -> node
 START = 32
 BATCH = 33
+REPLY = 34
+
+# REPLY statuses: what became of a CALL (each client library words its own exception from them).
+SERVICE_OK = "ok"  # the response follows
+SERVICE_UNAVAILABLE = "unavailable"  # nothing serves that name
+SERVICE_REFUSED = "refused"  # the server refused the connection (another srv type); error: the server's reason
+SERVICE_FAILED = "failed"  # the server's handler failed; error: the text the server sent ('' from a roscpp false)
+SERVICE_STATUSES = frozenset({SERVICE_OK, SERVICE_UNAVAILABLE, SERVICE_REFUSED, SERVICE_FAILED})
 
 KIND_NAMES = {
     HELLO: "HELLO", INIT: "INIT", ADVERTISE: "ADVERTISE", SUBSCRIBE: "SUBSCRIBE", UNREGISTER: "UNREGISTER",
-    PUBLISH: "PUBLISH", LOG: "LOG", OUTPUT: "OUTPUT", EXCEPTION: "EXCEPTION", WAIT: "WAIT",
-    START: "START", BATCH: "BATCH",
+    PUBLISH: "PUBLISH", LOG: "LOG", OUTPUT: "OUTPUT", EXCEPTION: "EXCEPTION", WAIT: "WAIT", CALL: "CALL",
+    START: "START", BATCH: "BATCH", REPLY: "REPLY",
 }
-NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT})
-GRADER_KINDS = frozenset({START, BATCH})
+NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT, CALL})
+GRADER_KINDS = frozenset({START, BATCH, REPLY})
 JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT, START})
 
 _HEADER = struct.Struct("<IB")
@@ -101,6 +110,22 @@ def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:
             raise ChannelError("BATCH delivery runs past the end of the frame")
         deliveries.append((ident, payload[end - size:end]))
     return header, deliveries
+
+
+def encode_header_bytes(kind: int, header: dict, data: bytes) -> bytes:
+    """A CALL or REPLY frame: ``u32 header length | header JSON | message bytes`` (a request or a response)."""
+    head = json.dumps(header, separators=(",", ":")).encode()
+    return encode(kind, _ID.pack(len(head)) + head + data)
+
+
+def split_header_bytes(payload: bytes) -> tuple[bytes, bytes]:
+    """The JSON header (still bytes: each side validates it its own way) and the message bytes of a CALL or REPLY."""
+    if len(payload) < 4:
+        raise ChannelError("frame shorter than its header length")
+    end = 4 + _ID.unpack_from(payload)[0]
+    if end > len(payload):
+        raise ChannelError("header runs past the end of the frame")
+    return payload[4:end], payload[end:]
 
 
 def encode_output(stream: int, text: bytes) -> bytes:

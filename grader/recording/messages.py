@@ -25,11 +25,17 @@ _EXTRA_TYPES = {
     "turtlesim/Color": "uint8 r\nuint8 g\nuint8 b\n",
 }
 
-# std_srvs services as (request, response) definitions; all primitive-only, so their md5 text is the text itself.
+# std_srvs and turtlesim services as (request, response) definitions; all primitive-only, so their md5 text is the
+# text itself.
 _SERVICES = {
     "std_srvs/Empty": ("", ""),
     "std_srvs/Trigger": ("", "bool success\nstring message"),
     "std_srvs/SetBool": ("bool data", "bool success\nstring message"),
+    "turtlesim/Kill": ("string name", ""),
+    "turtlesim/SetPen": ("uint8 r\nuint8 g\nuint8 b\nuint8 width\nuint8 off", ""),
+    "turtlesim/Spawn": ("float32 x\nfloat32 y\nfloat32 theta\nstring name", "string name"),
+    "turtlesim/TeleportAbsolute": ("float32 x\nfloat32 y\nfloat32 theta", ""),
+    "turtlesim/TeleportRelative": ("float32 linear\nfloat32 angular", ""),
 }
 
 
@@ -130,6 +136,12 @@ class MessageCatalog:
             return bytes(self._store.serialize_ros1(message, store_type))
         except Exception as exc:  # noqa: BLE001 - rosbags raises assorted errors for a wrong object
             raise RecordingError(f"cannot serialize {type(message).__name__} as {type_name}: {exc}") from None
+
+    @staticmethod
+    def known_service(service_name: str) -> bool:
+        """Whether ``service_name`` (any string) is a service type of this catalog."""
+        match = _TYPE_NAME.match(service_name)
+        return match is not None and f"{match.group(1)}/{match.group(2)}" in _SERVICES
 
     @staticmethod
     def service_md5sum(service_name: str) -> str:

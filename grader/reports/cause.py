@@ -10,7 +10,10 @@ from grader.reports.measured import describe
 from grader.reports.text import task_status_text
 
 # The runtime's findings name the exception that ended the node ("... stopped with an uncaught NameError at ...").
-_UNCAUGHT = re.compile(r"stopped with an uncaught (\w+)")
+_UNCAUGHT = re.compile(r"stopped with an uncaught ([\w.]+)")
+# What rospy.sleep / Rate.sleep raise once the node has been shut down (Ctrl+C, a required node ending): the usual
+# way a node without try/except ends at Ctrl+C, not a crash that the criteria follow from.
+_SHUTDOWN_EXCEPTIONS = {"ROSInterruptException"}
 _NEVER_INITIALISED = "never called rospy.init_node()"
 # Exceptions raised before the first line runs: the file could not even be compiled.
 _COMPILE_ERRORS = {"SyntaxError", "IndentationError", "TabError"}
@@ -31,12 +34,21 @@ class Cause:
         return f"Your node crashed; what it did before that was graded. {self.note}"
 
 
+def _crash_kind(diagnostic: str) -> str | None:
+    """The exception's class name when a finding says it ended the node, unless it is rospy's shutdown exception."""
+    found = _UNCAUGHT.search(diagnostic)
+    if found is None:
+        return None
+    kind = found.group(1).rstrip(".").rsplit(".", 1)[-1]
+    return None if kind in _SHUTDOWN_EXCEPTIONS else kind
+
+
 def node_cause(task: TaskReport) -> Cause | None:
     """The crash or start failure among a task's findings, or None when the node ran normally."""
-    crash = next((d for d in task.diagnostics if _UNCAUGHT.search(d)), None)
+    crash = next((d for d in task.diagnostics if _crash_kind(d)), None)
     if crash is None:
         return None
-    kind = _UNCAUGHT.search(crash).group(1)  # type: ignore[union-attr]
+    kind = _crash_kind(crash)
     never_ran = kind in _COMPILE_ERRORS or any(_NEVER_INITIALISED in d for d in task.diagnostics)
     return Cause(never_ran, crash)
 

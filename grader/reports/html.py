@@ -61,6 +61,11 @@ def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Seq
         f"<title>{escape(title)}</title><style>{_CSS}</style></head><body>",
         f"<h1>{escape(title)}</h1>",
         f'<p class="score">Score: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)</p>',
+    ]
+    if report.isolation:  # as on the console: a weaker mode stands out
+        css = ' class="warn"' if "rlimits" in report.isolation else ""
+        parts.append(f"<p{css}>Nodes isolated by {escape(report.isolation)}.</p>")
+    parts += [
         "<table><tr><th>Task</th><th>Status</th><th>Points</th></tr>",
     ]
     parts += [

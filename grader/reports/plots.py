@@ -11,7 +11,10 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
+from grader.metrics.run import Trajectory
 from grader.report import SubmissionReport
+from grader.reports.canvas import canvas_figure
+from sim.scenario import TURTLESIM
 
 IDEAL_RADIUS_M = 0.5
 SQUARE_SIDE_M = 1.0
@@ -71,14 +74,20 @@ def report_plots(report: SubmissionReport, dpi: int = 90) -> tuple[list[Plot], l
 
 
 def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = 90) -> list[Plot]:
-    """The figures for one recording: path, commands, and printed pose for printing tasks."""
+    """The figures for one recording: the turtlesim window (turtlesim runs), path, commands, and printed pose for
+    printing tasks."""
     plots = []
-    kind = shape_for(task_id)
-    truth = recording.ground_truth()
-    odom = recording.odometry()
-    path = truth if truth is not None and len(truth.t) else odom
     metadata = recording.metadata or {}
+    turtlesim = _record(metadata, "rosgrade").get("robot") == TURTLESIM
+    kind = None if turtlesim else shape_for(task_id)  # the ideal shapes are the TurtleBot tasks'
+    truth = recording.ground_truth()
+    odom = None if turtlesim else recording.odometry()  # turtlesim has no nav_msgs/Odometry: its truth is exact
+    path = truth if truth is not None and len(truth.t) else odom
     stop_s = shutdown_s(metadata)
+    if turtlesim and path is not None and len(path.t):
+        figure = canvas_figure(Trajectory.of(path.t, path.x, path.y, path.yaw))
+        plots.append(Plot(task_id, scenario, "canvas", f"{task_id} ({scenario}): the turtlesim window at the end",
+                          _png(figure, dpi)))
     if path is not None and len(path.t):
         figure = _path_figure(path, kind, has_truth=path is truth, stop_s=stop_s)
         plots.append(Plot(task_id, scenario, "path", f"{task_id} ({scenario}): driven path", _png(figure, dpi)))

@@ -84,7 +84,7 @@ def _endpoint_notes(session: Session, node: _Node, command_topics: tuple[str, ..
         if expected is not None and expected != sub.type:
             notes.append(f"{label} subscribed to {sub.topic} as {sub.type}, but it carries {expected}: "
                          "no messages can arrive.")
-        elif expected is None and not any(sub.topic == p.topic for n in session.nodes
+        elif expected is None and sub.count == 0 and not any(sub.topic == p.topic for n in session.nodes
                                            for p in n.link.state.publishers.values()):
             available = ", ".join(sorted(world_topics))
             notes.append(f"{label} subscribed to {sub.topic}, which nothing publishes here (the robot publishes "

@@ -86,9 +86,19 @@ class Wait(_Frame):
     wake_ns: Annotated[int, Field(ge=0)] | None
 
 
+class Call(_Frame):
+    """The JSON header of a CALL (the request's bytes follow it). ``probe``: only ask whether the service is served,
+    with no request (``wait_for_service``, as rospy's probe connection)."""
+
+    service: Name
+    type: Name  # "*" with md5sum "*" in a probe, which names no srv type
+    md5sum: Annotated[str, Field(pattern=r"^[0-9a-f]{32}$|^\*$")]
+    probe: bool
+
+
 SCHEMAS: dict[int, type[_Frame]] = {
     ch.HELLO: Hello, ch.INIT: Init, ch.ADVERTISE: Register, ch.SUBSCRIBE: Register, ch.UNREGISTER: Unregister,
-    ch.LOG: Log, ch.EXCEPTION: ExceptionReport, ch.WAIT: Wait,
+    ch.LOG: Log, ch.EXCEPTION: ExceptionReport, ch.WAIT: Wait, ch.CALL: Call,
 }
 
 

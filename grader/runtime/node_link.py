@@ -64,6 +64,27 @@ class Publication:
     data: bytes
 
 
+@dataclass(frozen=True)
+class ServiceCall:
+    """A node's service call (``probe``: only asking whether the service is served); its request bytes were
+    checked against the srv type when the grader knows that type. The session answers it with a ServiceReply."""
+
+    service: str
+    type: str
+    md5sum: str
+    probe: bool
+    request: bytes
+
+
+@dataclass(frozen=True)
+class ServiceReply:
+    """The answer to a ServiceCall: a ``rosgrade_channel.SERVICE_*`` status, the server's error text, the response."""
+
+    status: str
+    error: str = ""
+    response: bytes = b""
+
+
 @dataclass
 class LogLine:
     level: int
@@ -107,9 +128,9 @@ class EndpointLimitExceeded(Exception):
     """The node registered more publishers and subscribers than MAX_ENDPOINTS; it is stopped."""
 
 
-def _topic(value: str) -> str:
+def _topic(value: str, what: str = "topic") -> str:
     if not value.startswith("/") or any(c.isspace() for c in value):
-        raise ProtocolViolation(f"invalid topic name {value[:80]!r}")
+        raise ProtocolViolation(f"invalid {what} name {value[:80]!r}")
     return value
 
 
@@ -174,8 +195,10 @@ class NodeLink:
         self._send(ch.encode_json(ch.START, start))
         return hello.model_dump()
 
-    def run_until_wait(self, t_ns: int, sink: Callable[[object], None]) -> int | None:
-        """Read frames until the node yields, passing each event at t_ns to sink; returns wake_ns or None."""
+    def run_until_wait(self, t_ns: int, sink: Callable[[object], ServiceReply | None]) -> int | None:
+        """Read frames until the node yields, passing each event at t_ns to sink; returns wake_ns or None.
+
+        A ServiceCall is answered at once with the ServiceReply the sink returns for it (the node waits for it)."""
         self._deadline = time.monotonic() + self._silent_wall_s
         while True:
             kind, payload = self._read()
@@ -189,7 +212,9 @@ class NodeLink:
                 raise ProtocolViolation(f"{ch.KIND_NAMES.get(kind, kind)} frame: {exc}") from None
             for item in event if isinstance(event, list) else (event,):
                 if item is not None:
-                    sink(item)
+                    answer = sink(item)
+                    if isinstance(item, ServiceCall):
+                        self._reply(answer)
 
     @staticmethod
     def _parse(kind: int, payload: bytes):
@@ -215,6 +240,9 @@ class NodeLink:
         if kind == ch.OUTPUT:
             stream, text = ch.split_output(payload)
             return self._output(stream, text)
+        if kind == ch.CALL:
+            header, request = ch.split_header_bytes(payload)
+            return self._call(self._parse(kind, header), request)
         frame = self._parse(kind, payload)
         if kind in (ch.ADVERTISE, ch.SUBSCRIBE):
             return self._register(kind, frame, t_ns)
@@ -255,6 +283,22 @@ class NodeLink:
                             queue_size=frame.queue_size, latch=frame.latch, registered_ns=t_ns)
         table[endpoint.ident] = endpoint
         return endpoint if kind == ch.SUBSCRIBE else None
+
+    def _call(self, frame: frames.Call, request: bytes) -> ServiceCall:
+        """A service call, with its request checked as PUBLISH checks a message (when the srv type is known)."""
+        service = _topic(frame.service, "service")
+        known = self._catalog.known_service(frame.type)
+        if known and frame.md5sum != self._catalog.service_md5sum(frame.type):
+            raise ProtocolViolation(f"md5sum for service type {frame.type} does not match its definition")
+        if frame.probe:
+            if request:
+                raise ProtocolViolation(f"CALL probe of {service} carries {len(request)} request bytes")
+        elif known:
+            try:
+                self._catalog.decode(frame.type + "Request", request)
+            except RecordingError as exc:
+                raise ProtocolViolation(f"request to {service} is not a valid {frame.type} request: {exc}") from None
+        return ServiceCall(service, frame.type, frame.md5sum, frame.probe, request)
 
     def _init(self, frame: frames.Init, t_ns: int) -> None:
         """A node's name is fixed by its first init_node, and never one of the grader's own."""
@@ -308,6 +352,12 @@ class NodeLink:
         except OSError:
             raise NodeExited() from None
         del self._pending[:written]
+
+    def _reply(self, reply: ServiceReply) -> None:
+        """Send the REPLY to the node's CALL."""
+        if not isinstance(reply, ServiceReply) or reply.status not in ch.SERVICE_STATUSES:
+            raise TypeError(f"a service call needs a ServiceReply, the session gave {reply!r}")
+        self._send(ch.encode_header_bytes(ch.REPLY, {"status": reply.status, "error": reply.error}, reply.response))
 
     def resume(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None,
                connections: dict[int, int] | None = None) -> None:

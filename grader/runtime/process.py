@@ -189,7 +189,7 @@ class NodeProcess:
     # -- finding the node's processes ----------------------------------------------------------------------------
     def _sandbox_init(self) -> int | None:
         """bwrap's init process (pid 1 of the node's pid namespace), a child of the bwrap we started."""
-        kids = confine.children_of(self.popen.pid)
+        kids = confine.children_of(self.popen.pid) if self._leader_held() else []
         return kids[0] if kids else None
 
     def _node_pid(self) -> int | None:
@@ -215,14 +215,14 @@ class NodeProcess:
         else:
             found.update(self._orphans())
         marker = f"{MARKER_ENV}={self.marker}".encode()
-        tree = confine.descendants(self.popen.pid)
+        tree = confine.descendants(self.popen.pid) if self._leader_held() else set()
         for pid in confine.processes():
             if pid == os.getpid():
                 continue
             if (pid in tree and pid != self.popen.pid) or confine.has_marker(pid, marker) \
                     or (self.plan.uid is not None and confine.uid_of(pid) == self.plan.uid):
                 found.add(pid)
-            else:
+            elif self._leader_held():
                 try:
                     if os.getsid(pid) == self.popen.pid or os.getpgid(pid) == self.popen.pid:
                         found.add(pid)
@@ -303,23 +303,29 @@ class NodeProcess:
             self._kill_all()
             return
         target = self._node_pid()
+        if target is None or (target == self.popen.pid and not self._leader_held()):
+            return  # the node has exited and been reaped: its pid may be another process's by now
         try:
-            if target is None:
-                raise ProcessLookupError
             os.killpg(target, sig)
         except (ProcessLookupError, PermissionError):
             try:
-                os.kill(target or self.popen.pid, sig)
+                os.kill(target, sig)
             except (ProcessLookupError, PermissionError, OSError):
                 pass
+
+    def _leader_held(self) -> bool:
+        """Whether the process we started is not reaped yet, so that its pid (and the process group named after it)
+        is still ours: once reaped, the kernel may give that number to another grader's new node."""
+        return self.popen.returncode is None
 
     def _kill_all(self) -> None:
         deadline = time.monotonic() + _REAP_S
         while True:
-            try:
-                os.killpg(self.popen.pid, signal.SIGKILL)
-            except (ProcessLookupError, PermissionError):
-                pass
+            if self._leader_held():
+                try:
+                    os.killpg(self.popen.pid, signal.SIGKILL)
+                except (ProcessLookupError, PermissionError):
+                    pass
             left = [p for p in self.leftovers() if not confine.status_fields(p).get("State", "Z").startswith("Z")]
             for pid in left:
                 try:

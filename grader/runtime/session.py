@@ -23,12 +23,13 @@ from grader.recording import Recorder, default_catalog, decode_twist, log_bytes,
 from grader.runtime import confine
 from grader.runtime.diagnostics import diagnose, topic_summary
 from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
-                                      NodeSilent, OutputLine, ProtocolViolation, Publication)
+                                      NodeSilent, OutputLine, ProtocolViolation, Publication, ServiceCall,
+                                      ServiceReply)
 from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from grader.runtime import world_codec
-from sim import CommandSample, TurtlesimWorld, World, WorldTopic, open_world
+from sim import CommandSample, TurtlesimWorld, World, WorldService, WorldTopic, open_world
 
 # Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
 # published before that are lost. A new subscriber to a running publisher (Gazebo's /odom) gets the next message.
@@ -40,6 +41,9 @@ LOST_PREFIX = "/rosgrade/lost"
 # A node's publications on a topic only the world or the grader publish are recorded under this prefix, never
 # delivered, and never on the world's own topic.
 IGNORED_PREFIX = "/rosgrade/ignored"
+# A node's service calls are recorded under this prefix and the service's name: ``<service>/request`` (what the node
+# sent), then ``<service>/response`` (what the world answered) or ``<service>/error`` (why the call failed).
+SERVICE_PREFIX = "/rosgrade/service"
 WORLD_CALLERID = "/gazebo"
 DRIVER_CALLERID = "/rosgrade_driver"
 # Names of the grader's own nodes (and real ROS's /rosout): a student node may not take them.
@@ -127,8 +131,7 @@ class Session:
                     self._spawn(node_spec, workroot / f"node{index}")
             with timing.stage("world set-up (model compile)"):
                 self.world = open_world(self.spec.scenario)
-            self.publications = {p.topic: p for p in self.world.publications}
-            self.world_topics |= {(p.topic, p.type) for p in self.world.publications if p.to_nodes}
+            self._take_declarations()
         except BaseException:
             for node in self.nodes:
                 node.process.close()
@@ -178,7 +181,7 @@ class Session:
         link, node_spec = node.link, node.spec
         t = self.world.time_ns
         try:
-            link.handshake({"t_ns": t, "params": {"/use_sim_time": True, **node_spec.params},
+            link.handshake({"t_ns": t, "params": {"/use_sim_time": self.world.sim_clock, **node_spec.params},
                             "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t),
                             "world_topics": sorted([topic, type_name] for topic, type_name in self.world_topics)})
         except (NodeExited, NodeSilent, ProtocolViolation) as exc:
@@ -325,7 +328,9 @@ class Session:
             self._node_failed(node, exc, t)
 
     # -- what nodes do -----------------------------------------------------------------------------------------
-    def _node_event(self, node: _Node, event: object, t: int) -> None:
+    def _node_event(self, node: _Node, event: object, t: int) -> ServiceReply | None:
+        if isinstance(event, ServiceCall):
+            return self._service_call(node, event, t)
         if isinstance(event, Publication):
             self._publication(node, event.endpoint, event.data, t)
         elif isinstance(event, OutputLine):
@@ -339,6 +344,55 @@ class Session:
                                            event.file, event.function, event.line,
                                            sorted({e.topic for e in node.link.state.publishers.values()})),
                                  t, callerid=node.callerid, origin="node")
+        return None
+
+    # -- service calls (answered by the world's server at the caller's time) -----------------------------------
+    def _service_call(self, node: _Node, call: ServiceCall, t: int) -> ServiceReply:
+        """Answer a node's service call at t as the server the world declares would; record it (not probes)."""
+        served = next((s for s in self.world.services if s.name == call.service), None)
+        if served is None:
+            reply = ServiceReply(ch.SERVICE_UNAVAILABLE)
+        elif call.probe:  # a probe names no srv type (md5sum "*"), which roscpp lets through
+            return ServiceReply(ch.SERVICE_OK)
+        elif call.type != served.type or call.md5sum != self.catalog.service_md5sum(served.type):
+            # roscpp's words when a client's srv type is not the server's
+            has = self.catalog.service_md5sum(served.type)
+            reply = ServiceReply(ch.SERVICE_REFUSED, f"client wants service {call.service} to have md5sum "
+                                                     f"{call.md5sum}, but it has {has}. Dropping connection.")
+        else:
+            return self._serve(node, served, call.request, t)
+        if not call.probe:
+            self._record_failure(call.service, reply, t)
+        return reply
+
+    def _serve(self, node: _Node, served: WorldService, request: bytes, t: int) -> ServiceReply:
+        """Hand a request to the world now: what it logs, its answer and the topics it adds or removes (a spawned or
+        killed turtle) take effect at once."""
+        self._recorder.write(f"{SERVICE_PREFIX}{served.name}/request", served.type + "Request", request, t,
+                             callerid=node.callerid, origin="node")
+        result = self.world.call(served.name, world_codec.request_values(self.catalog, served.type, request))
+        for sample in result.samples:
+            self._world_sample(sample)
+        self._take_declarations()
+        if not result.ok:
+            reply = ServiceReply(ch.SERVICE_FAILED, result.error)
+            self._record_failure(served.name, reply, t)
+            return reply
+        data = world_codec.response_bytes(self.catalog, served.type, result.response)
+        self._recorder.write(f"{SERVICE_PREFIX}{served.name}/response", served.type + "Response", data, t,
+                             callerid=WORLD_CALLERID, origin="world")
+        return ServiceReply(ch.SERVICE_OK, response=data)
+
+    def _record_failure(self, service: str, reply: ServiceReply, t: int) -> None:
+        """Why a call failed, as ``status`` or ``status: the server's text`` (std_msgs/String)."""
+        text = f"{reply.status}: {reply.error}" if reply.error else reply.status
+        self._recorder.write(f"{SERVICE_PREFIX}{service}/error", "std_msgs/String", string_bytes(text), t,
+                             callerid=WORLD_CALLERID, origin="world")
+
+    def _take_declarations(self) -> None:
+        """What the world publishes now: at the start, and again after a service call (spawn and kill change it)."""
+        self.publications = {p.topic: p for p in self.world.publications}
+        self.world_topics = {(p.topic, p.type) for p in self.world.publications if p.to_nodes}
 
     # -- connections (as a ROS 1 master and TCPROS would make them) -------------------------------------------
     @staticmethod

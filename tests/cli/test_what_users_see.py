@@ -79,6 +79,22 @@ def test_a_node_that_ran_normally_has_no_cause():
     assert node_cause(report_with([NOTE]).tasks[0]) is None
 
 
+INTERRUPTED = ("figure_eight.py stopped with an uncaught rospy.exceptions.ROSInterruptException at figure_eight.py "
+               "line 53 (`rate.sleep()`): ROS shutdown request")
+
+
+def test_rate_sleep_raising_at_ctrl_c_is_not_called_a_crash():
+    """rospy's Rate.sleep() raises ROSInterruptException once the node is shut down: a node without try/except
+    ends that way at every Ctrl+C; its lost criteria must keep their own feedback, not 'fix the crash first'."""
+    report = report_with([INTERRUPTED, NOTE], passed=False)
+    assert node_cause(report.tasks[0]) is None
+    console = console_text(report)
+    assert "crashed" not in console and "ROSInterruptException" in console  # still noticed, not the lead
+    assert node_cause(report_with([INTERRUPTED, CRASH], passed=False).tasks[0]).note == CRASH
+    dotted = CRASH.replace("uncaught NameError", "uncaught genpy.message.SerializationError")
+    assert node_cause(report_with([dotted], passed=False).tasks[0]).note == dotted
+
+
 def test_console_table_fits_80_columns_without_one_word_lines():
     buffer = io.StringIO()
     print_report(Console(file=buffer, width=80, color_system=None), fakes.make_report())
@@ -222,6 +238,11 @@ def test_the_command_plot_covers_the_whole_recording():
     ("All 12 velocity commands were within the limits.", "All 12 velocity commands were within the limits."),
     ("sides between 1.02 and 1.025 m", "sides between 1.02 and 1.025 m"),
     ("exception: n/a", "exception: n/a"),
+    ("2 loops of 1.00–1.00 m, each closing within 0.01 m.", "2 loops of 1.00 m, each closing within 0.01 m."),
+    ("turns of 89.9°–89.9°.", "turns of 89.9°."),
+    ("2 loops of 0.98–1.00 m.", "2 loops of 0.98–1.00 m."),
+    ("loops of 1.0–1.00 m", "loops of 1.0–1.00 m"),
+    ("scored 11.0–1.00 m", "scored 11.0–1.00 m"),
 ])
 def test_feedback_wording_reads_right_whatever_the_numbers(rendered, expected):
     assert tidy(rendered) == expected

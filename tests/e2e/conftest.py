@@ -10,12 +10,18 @@ from grader.report import SubmissionReport
 
 ROOT = Path(__file__).resolve().parents[2]
 REFERENCE = ROOT / "reference_solutions"
+REFERENCE_TURTLESIM = ROOT / "reference_solutions_turtlesim"
 EXAMPLES = ROOT / "submissions_example"
 
 
 @pytest.fixture(scope="session")
 def reference_dir() -> Path:
     return REFERENCE
+
+
+@pytest.fixture(scope="session")
+def turtlesim_reference_dir() -> Path:
+    return REFERENCE_TURTLESIM
 
 
 @pytest.fixture(scope="session")

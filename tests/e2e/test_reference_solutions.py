@@ -7,21 +7,37 @@ from grader.rubric import load_rubrics
 
 pytestmark = pytest.mark.slow
 
-TASKS = sorted(load_rubrics())
+RUBRICS = load_rubrics()
+TASKS = sorted(RUBRICS)
+# The TurtleBot course's solutions and the turtlesim course's live in separate folders.
+COURSES = {"robot": sorted(t for t, r in RUBRICS.items() if r.robot != "turtlesim"),
+           "turtlesim": sorted(t for t, r in RUBRICS.items() if r.robot == "turtlesim")}
 
 
 @pytest.fixture(scope="module")
-def report(graded, reference_dir):
-    return graded(reference_dir)
+def course_report(graded, reference_dir, turtlesim_reference_dir):
+    """course_report(course): the report on that course's reference folder, graded once and only when asked for."""
+    folders = {"robot": reference_dir, "turtlesim": turtlesim_reference_dir}
+    return lambda course: graded(folders[course])
 
 
-def test_every_task_is_found_from_the_script_names(report):
-    assert sorted(t.id for t in report.tasks) == TASKS
+@pytest.fixture
+def task_result(course_report):
+    """task_result(task): that task's result, from the folder of its course."""
+    def result(task):
+        course = "turtlesim" if task in COURSES["turtlesim"] else "robot"
+        return next(t for t in course_report(course).tasks if t.id == task)
+    return result
+
+
+@pytest.mark.parametrize("course", sorted(COURSES))
+def test_every_task_is_found_from_the_script_names(course_report, course):
+    assert sorted(t.id for t in course_report(course).tasks) == COURSES[course]
 
 
 @pytest.mark.parametrize("task", TASKS)
-def test_reference_scores_full_marks(report, task):
-    result = next(t for t in report.tasks if t.id == task)
+def test_reference_scores_full_marks(task_result, task):
+    result = task_result(task)
     assert result.status == "graded", result.message
     lost = {c.id: c.feedback for c in result.criteria if c.score < c.max_score}
     assert lost == {}
@@ -29,25 +45,25 @@ def test_reference_scores_full_marks(report, task):
 
 
 @pytest.mark.parametrize("task", TASKS)
-def test_reference_runs_raise_no_exception(report, task):
-    result = next(t for t in report.tasks if t.id == task)
+def test_reference_runs_raise_no_exception(task_result, task):
+    result = task_result(task)
     assert not [d for d in result.diagnostics if "uncaught" in d or "never called" in d]
 
 
 @pytest.mark.parametrize("task", TASKS)
-def test_rescoring_the_recordings_gives_exactly_the_live_result(report, task):
+def test_rescoring_the_recordings_gives_exactly_the_live_result(task_result, task):
     from pathlib import Path
 
     from grader.recording import Recording
     from grader.scoring import score_task
 
-    live = next(t for t in report.tasks if t.id == task)
+    live = task_result(task)
     recordings = {Path(p).stem: Recording.open(p) for p in live.recordings}
     again = score_task(load_rubrics()[task], recordings)
     assert [c.model_dump() for c in again.criteria] == [c.model_dump() for c in live.criteria]
 
 
-def test_a_ros1_bag_without_ground_truth_is_scored_from_odometry(report, tmp_path):
+def test_a_ros1_bag_without_ground_truth_is_scored_from_odometry(task_result, tmp_path):
     from pathlib import Path
 
     from rosbags.rosbag1 import Writer
@@ -56,7 +72,7 @@ def test_a_ros1_bag_without_ground_truth_is_scored_from_odometry(report, tmp_pat
     from grader.recording import Recording
     from grader.scoring import score_task
 
-    live = next(t for t in report.tasks if t.id == "move_circle")
+    live = task_result("move_circle")
     source = Recording.open(next(p for p in live.recordings if Path(p).stem == "nominal"))
     store = get_typestore(Stores.ROS1_NOETIC)
     bag = tmp_path / "real_robot.bag"

@@ -12,7 +12,7 @@ from grader.runtime import NodeSpec, RunSpec
 from grader.runtime.session import run
 from sim import Scenario
 
-GO_TO_GOAL = Path(__file__).resolve().parents[2] / "reference_solutions" / "go_to_goal.py"
+GO_TO_GOAL = Path(__file__).resolve().parents[2] / "reference_solutions_turtlesim" / "go_to_goal.py"
 
 pytestmark = pytest.mark.slow
 

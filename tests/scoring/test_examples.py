@@ -19,7 +19,8 @@ def _scripts(folder: Path) -> set[str]:
 
 def _reference_scripts(task: str) -> list[Path]:
     """The reference node(s) of a task: its scripts, or the ones its reference launch file starts."""
-    rubric, folder = RUBRICS[task], ROOT / "reference_solutions"
+    rubric = RUBRICS[task]
+    folder = ROOT / ("reference_solutions_turtlesim" if rubric.robot == "turtlesim" else "reference_solutions")
     if rubric.launch is None:
         return [folder / node.script for node in rubric.nodes]
     from grader.launch import find_packages, read_launch

@@ -20,6 +20,12 @@ CONTRACT = {
                         "log_values", "velocity_limits", "shutdown_stop"],
     "move_distance_launch": ["stop_position", "stays_stopped", "velocity_limits"],
     "square_odom_launch": ["side_length", "corner_angle", "two_loop_stop", "pose_output", "output_rate"],
+    "turtle_move": ["distance", "direction", "stops"],
+    "turtle_rotate": ["angle", "direction", "stops"],
+    "turtle_circle": ["circle", "keeps_moving", "no_wall_hit"],
+    "turtle_triangle": ["sides_equal", "turn_angle", "closure", "stops"],
+    "turtle_goal": ["reaches_goal", "stops", "no_wall_hit"],
+    "turtle_clean": ["coverage", "no_wall_hit", "finishes"],
 }
 
 MINIMAL = '''

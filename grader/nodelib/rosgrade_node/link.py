@@ -49,6 +49,18 @@ class Link:
     def send_message(self, kind: int, ident: int, data: bytes) -> None:
         self.send(ch.encode_id_bytes(kind, ident, data))
 
+    def call(self, header: dict, request: bytes) -> tuple[dict, bytes]:
+        """Send a CALL and read its REPLY: (the reply's header, the response bytes).
+
+        The grader answers at once, before anything else, so only the thread holding the scheduler's token may call
+        (no other thread reads the channel meanwhile)."""
+        self.send(ch.encode_header_bytes(ch.CALL, header, request))
+        try:
+            head, response = ch.split_header_bytes(self._read(ch.REPLY))
+            return ch.decode_json(head), response
+        except (ch.ChannelError, OSError) as exc:
+            _fail(exc)
+
     def read_json(self, kind: int) -> dict:
         """Read one frame that must be of ``kind`` and carry JSON."""
         try:

@@ -79,7 +79,7 @@ def init_node(name, argv=None, anonymous=False, log_level=None, disable_rostime=
     if core._shutdown_flag:
         raise ROSInitException("init_node interrupted before it could complete")
     core.set_initialized(log_level)
-    rostime.set_initialized()
+    rostime.set_initialized(wallclock=not params.get_param("/use_sim_time", False))
     runtime.link.send_json(ch.INIT, {"name": resolved, "anonymous": bool(anonymous), "log_level": log_level,
                                      "disable_signals": bool(disable_signals)})
     # Real rospy's first /clock arrives 4-10 ms after init_node returns: the time reads 0 until the node first

@@ -131,7 +131,8 @@ def _emit(level: int, msg: object, args: tuple, frame) -> None:
     if level < _log_level:
         return
     text = format_message(msg, args)
-    sim = runtime.scheduler.clock_ns / 1e9 if rostime.is_initialized() else None
+    # rosgraph's stream handler adds the ROS time only when it is not the wall clock
+    sim = runtime.scheduler.clock_ns / 1e9 if rostime.is_initialized() and not rostime.is_wallclock() else None
     (sys.stdout if level <= INFO else sys.stderr).write(format_line(level, text, runtime.wall_time(), sim))
     if runtime.link is not None and _initialized:  # rospy's /rosout publisher comes up once init_node has registered
         runtime.link.send_json(ch.LOG, {"level": level, "msg": text, "name": names.get_name(),

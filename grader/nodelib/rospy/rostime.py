@@ -8,6 +8,7 @@ from rosgrade_node import runtime
 from .exceptions import ROSInitException
 
 _initialized = False
+_wallclock = False
 _cached: Time | None = None
 _cached_ns = -1
 
@@ -42,10 +43,11 @@ def charge() -> None:
         runtime.scheduler.charge()
 
 
-def set_initialized() -> None:
-    """init_node switched the node to sim time: Time(0) until the first /clock."""
-    global _initialized
-    _initialized = True
+def set_initialized(wallclock: bool = False) -> None:
+    """init_node chose the node's clock: sim time (Time(0) until the first /clock) when /use_sim_time is set, as
+    with Gazebo; otherwise the wall clock, as with turtlesim, which publishes no /clock."""
+    global _initialized, _wallclock
+    _initialized, _wallclock = True, wallclock
 
 
 def is_initialized() -> bool:
@@ -53,8 +55,8 @@ def is_initialized() -> bool:
 
 
 def is_wallclock() -> bool:
-    """rosgrade nodes always run under /use_sim_time."""
-    return False
+    """Whether the node's ROS time is the wall clock (no /use_sim_time): its patched time.time()."""
+    return _wallclock
 
 
 def _now() -> Time:
@@ -62,7 +64,8 @@ def _now() -> Time:
     global _cached, _cached_ns
     if not _initialized:
         raise ROSInitException("time is not initialized. Have you called init_node()?")
-    ns = runtime.scheduler.clock_ns
+    sched = runtime.scheduler
+    ns = runtime.wall_epoch_ns + sched.world_ns if _wallclock else sched.clock_ns
     if ns != _cached_ns:
         _cached, _cached_ns = Time(ns // 1000000000, ns % 1000000000), ns
     return _cached

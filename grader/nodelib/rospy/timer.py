@@ -21,7 +21,7 @@ def _clock_wake_ns(target_ns: int) -> int:
 
 
 def _wall_sleep(duration) -> None:
-    """Before init_node rospy sleeps on the wall clock, which here is the patched (sim) time.sleep."""
+    """rospy sleeps on the wall clock before init_node and without /use_sim_time: here the patched time.sleep."""
     if isinstance(duration, genpy.Duration):
         duration = duration.to_sec()
     if duration < 0:
@@ -35,8 +35,8 @@ def sleep(duration) -> None:
     Raises ROSInterruptException("ROS shutdown request") when the node is (or gets) shut down, even if the deadline
     has passed, and ROSTimeMovedBackwardsException if the clock went back.
     """
-    if not rostime.is_initialized():
-        _wall_sleep(duration)
+    if not rostime.is_initialized() or rostime.is_wallclock():
+        _wall_sleep(duration)  # as rospy's wallsleep: no shutdown check, a negative duration returns at once
         return
     sched = runtime.scheduler
     if not isinstance(duration, genpy.Duration):

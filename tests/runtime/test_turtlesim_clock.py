@@ -1,0 +1,35 @@
+"""turtlesim has no /clock: its nodes run on the wall clock (rospy.Time.now() is never 0, logs carry one time),
+so the wiki's time-based move works as it does on a real turtlesim, while robot runs keep /use_sim_time."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from grader.recording import Recording
+from grader.runtime import NodeSpec, RunSpec
+from grader.runtime.session import run
+from sim import Scenario
+
+NODES = Path(__file__).parent / "nodes"
+
+pytestmark = pytest.mark.slow
+
+
+def test_the_wiki_move_node_drives_its_distance_on_turtlesim(tmp_path):
+    spec = RunSpec(scenario=Scenario(robot="turtlesim", duration=6.0),
+                   nodes=(NodeSpec(script=NODES / "wiki_move.py", stdin="1.0\n2.0\n1\n"),))
+    result = run(spec, tmp_path / "run.mcap", tmp_path / "run.log")
+    assert result.nodes[0].status == "exited", result.nodes[0].message
+    assert "start time is zero: False wallclock: True" in (tmp_path / "run.log").read_text()
+    truth = Recording.open(tmp_path / "run.mcap").ground_truth()
+    assert truth.x[-1] - truth.x[0] == pytest.approx(2.0, abs=0.05)
+
+
+def test_robot_runs_keep_sim_time(tmp_path):
+    script = tmp_path / "clock.py"
+    script.write_text("import rospy\nrospy.init_node('c')\nprint('wallclock:', rospy.rostime.is_wallclock(), "
+                      "rospy.get_param('/use_sim_time'))\n")
+    spec = RunSpec(scenario=Scenario(duration=1.0), nodes=(NodeSpec(script=script),))
+    run(spec, tmp_path / "run.mcap", tmp_path / "run.log")
+    assert "wallclock: False True" in (tmp_path / "run.log").read_text()
