@@ -11,7 +11,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from grader import timing
-from grader.launch import LaunchError, find_packages, read_launch
+from grader.launch import LaunchError, find_packages, read_launch, turtlesim
 from grader.launch.specs import node_specs
 from grader.recording import Recording, RecordingError
 from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
@@ -106,11 +106,13 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> Started:
         if name not in launch.args:
             findings.append(f"{found[0].name} declares no <arg name=\"{name}\">, so roslaunch ignored the "
                             f"task's {name}:={value}: declare it and use $(arg {name}) where the value is needed.")
+    findings += turtlesim.check_robot(launch, turtlesim.world_node(launch), rubric.robot)
     for world in launch.worlds:
         if world.robot != rubric.robot:
             findings.append(f"{world.where}: {world.package}/{world.file} starts a {world.robot}, but this task is "
                             f"graded on a {rubric.robot}.")
-    scripts = list(dict.fromkeys(spec.script for spec in nodes))
+    # The grader's own nodes (turtle_teleop_key) are neither checked nor shown as the student's files.
+    scripts = list(dict.fromkeys(spec.script for spec in nodes if spec.script != turtlesim.TELEOP_SCRIPT))
     for script in scripts:
         findings += check_script(script)
     return nodes, findings, [found[0], *scripts]

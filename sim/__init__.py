@@ -8,7 +8,7 @@ from sim.samples import (ColorSample, CommandSample, GroundTruthSample, ImuSampl
 from sim.scenario import Imperfections, Pose2D, Scenario, ScriptedCommand
 from sim.turtlesim import TurtlesimError, TurtlesimWorld
 from sim.world import SimError, World
-from sim.worlds import open_world
+from sim.worlds import WORLD_NODE_NAMES, open_world
 
 __all__ = [
     "ColorSample",
@@ -17,6 +17,7 @@ __all__ = [
     "TurtlesimError",
     "TurtlesimWorld",
     "open_world",
+    "WORLD_NODE_NAMES",
     "CommandSample",
     "GroundTruthSample",
     "ImuSample",

@@ -26,11 +26,16 @@ def _check_rgb(rgb: Rgb) -> Rgb:
 
 
 class Canvas:
-    """Pixels of the path image, indexed [row, column] with row 0 at the top (screen y grows downwards)."""
+    """Pixels of the path image, indexed [row, column] with row 0 at the top (screen y grows downwards).
+
+    ``inked`` marks every pixel a pen line has covered since the canvas was made, whatever the colour; ``clear``
+    leaves it alone. It is the pen's whole trail (what coverage counts), where ``pixels`` is what the window shows.
+    """
 
     def __init__(self, background: Rgb = DEFAULT_BACKGROUND) -> None:
         self.background = _check_rgb(background)
         self.pixels = np.empty((CANVAS_PX, CANVAS_PX, 3), dtype=np.uint8)
+        self.inked = np.zeros((CANVAS_PX, CANVAS_PX), dtype=bool)
         self.clear()
 
     def clear(self, background: Rgb | None = None) -> None:
@@ -70,3 +75,4 @@ class Canvas:
             across = (columns - x0) * -uy + (rows - y0) * ux
             covered = (along >= -half) & (along <= length + half) & (np.abs(across) <= half)
         self.pixels[lo_y:hi_y + 1, lo_x:hi_x + 1][covered] = _check_rgb(rgb)
+        self.inked[lo_y:hi_y + 1, lo_x:hi_x + 1] |= covered

@@ -31,6 +31,7 @@ UPDATE_NS = 16_000_000  # the Qt update timer's interval
 DT = 0.001 * 16  # turtle_frame.cpp passes 0.001 * interval as dt
 COMMAND_TIMEOUT_NS = 1_000_000_000
 CANVAS_M = (CANVAS_PX - 1) / METER_PX  # 11.0889 m: the window's width in metres
+CENTRE = CANVAS_M / 2.0  # where turtle1 starts, and starts again after /reset
 # turtle.cpp wraps θ with its own PI macro, not M_PI.
 TURTLE_PI = 3.14159265
 DEFAULT_PEN = (179, 184, 255)
@@ -70,10 +71,52 @@ class Turtle:
     pen_on: bool = True
     teleports: list[tuple[bool, float, float, float]] = field(default_factory=list)  # (relative, a, b, θ)
 
+    @classmethod
+    def spawned(cls, name: str, x: float, y: float, theta: float) -> Turtle:
+        """A new turtle where ``spawnTurtle`` puts it: canvas (x, y up) to screen (x, height − y), not clamped."""
+        return cls(name, x, CANVAS_M - y, theta)
+
     @property
     def y(self) -> float:
         """Canvas y, up (what turtlesim/Pose says)."""
         return CANVAS_M - self.y_screen
+
+    def set_pen(self, request: Request) -> None:
+        """turtle.cpp's set_pen: ``off`` lifts the pen and keeps its colour; otherwise a new pen (width 0 keeps Qt's
+        default cosmetic pen, 1 px wide)."""
+        self.pen_on = not request["off"]
+        if not request["off"]:
+            self.pen = (int(request["r"]), int(request["g"]), int(request["b"]))
+            self.pen_width = int(request["width"]) or 1
+
+    def queue_teleport(self, relative: bool, request: Request) -> None:
+        """teleport_relative (``linear``, ``angular``) or teleport_absolute (``x``, ``y``, ``theta``) request: kept
+        until the turtle's next update, as turtle.cpp does."""
+        if relative:
+            self.teleports.append((True, float(request["linear"]), 0.0, float(request["angular"])))
+        else:
+            self.teleports.append((False, float(request["x"]), float(request["y"]), float(request["theta"])))
+
+    def apply_teleports(self, canvas: Canvas) -> None:
+        """The queued teleports, in order, each drawn with the pen (start of turtle.cpp's ``update``)."""
+        for relative, a, b, theta in self.teleports:
+            old = (self.x, self.y_screen)
+            if relative:  # a = linear: rotate first, then move along the new heading
+                self.theta += theta
+                self.x += math.cos(self.theta) * a
+                self.y_screen += -math.sin(self.theta) * a
+            else:
+                self.x, self.y_screen, self.theta = a, max(0.0, CANVAS_M - b), theta
+            self.draw(canvas, old)
+        self.teleports.clear()
+
+    def draw(self, canvas: Canvas, old: tuple[float, float]) -> None:
+        """The pen line from ``old`` (screen metres) to where the turtle is now (nothing when the pen is off, it did
+        not move, or an end is not a finite point: Qt draws nothing there either)."""
+        ends = (*old, self.x, self.y_screen)
+        if self.pen_on and (self.x, self.y_screen) != old and all(math.isfinite(v) for v in ends):
+            canvas.line((old[0] * METER_PX, old[1] * METER_PX), (self.x * METER_PX, self.y_screen * METER_PX),
+                        self.pen, self.pen_width)
 
     @cached_property
     def namespace(self) -> str:
@@ -140,6 +183,11 @@ class TurtlesimWorld(ScenarioTimes):
     def command_topics(self) -> tuple[str, ...]:
         """Each live turtle's cmd_vel (scripted commands without a topic go to turtle1's)."""
         return tuple(turtle.topic("cmd_vel") for turtle in self.turtles.values())
+
+    @property
+    def node_name(self) -> str:
+        """The ROS node that publishes this world's topics (the callerid recordings name)."""
+        return NODE_NAME
 
     @property
     def sim_clock(self) -> bool:
@@ -237,17 +285,7 @@ class TurtlesimWorld(ScenarioTimes):
 
     def _move(self, turtle: Turtle, t_ns: int, out: list[Sample] | None) -> None:
         """turtle.cpp's ``Turtle::update`` for one turtle."""
-        for relative, a, b, theta in turtle.teleports:
-            old = (turtle.x, turtle.y_screen)
-            if relative:  # a = linear: rotate first, then move along the new heading
-                turtle.theta += theta
-                turtle.x += math.cos(turtle.theta) * a
-                turtle.y_screen += -math.sin(turtle.theta) * a
-            else:
-                turtle.x, turtle.y_screen, turtle.theta = a, max(0.0, CANVAS_M - b), theta
-            self._draw(turtle, old)
-        turtle.teleports.clear()
-
+        turtle.apply_teleports(self.canvas)
         if t_ns - turtle.last_command_ns > COMMAND_TIMEOUT_NS:
             turtle.linear_x = turtle.linear_y = turtle.angular = 0.0
         old = (turtle.x, turtle.y_screen)
@@ -276,7 +314,7 @@ class TurtlesimWorld(ScenarioTimes):
                     t_ns, GROUND_TRUTH_TOPIC, "world", turtle.name, (turtle.x, turtle.y, 0.0),
                     (0.0, 0.0, math.sin(half), math.cos(half)), (turtle.linear_x, turtle.linear_y, 0.0),
                     (0.0, 0.0, turtle.angular)))
-        self._draw(turtle, old)
+        turtle.draw(self.canvas, old)
 
     def _color_under(self, turtle: Turtle) -> Rgb:
         """The canvas pixel under the turtle; a position that is not a number (a NaN command or teleport) reads what
@@ -284,14 +322,6 @@ class TurtlesimWorld(ScenarioTimes):
         if not (math.isfinite(turtle.x) and math.isfinite(turtle.y_screen)):
             return (0, 12345 >> 8 & 0xFF, 12345 & 0xFF)
         return self.canvas.color_at(turtle.x * METER_PX, turtle.y_screen * METER_PX)
-
-    def _draw(self, turtle: Turtle, old: tuple[float, float]) -> None:
-        """The pen line from ``old`` to where the turtle is now (nothing when the pen is off, it did not move, or an
-        end is not a finite point: Qt draws nothing there either)."""
-        ends = (*old, turtle.x, turtle.y_screen)
-        if turtle.pen_on and (turtle.x, turtle.y_screen) != old and all(math.isfinite(v) for v in ends):
-            self.canvas.line((old[0] * METER_PX, old[1] * METER_PX),
-                             (turtle.x * METER_PX, turtle.y_screen * METER_PX), turtle.pen, turtle.pen_width)
 
     # -- turtles -------------------------------------------------------------------------------------------------
 
@@ -307,8 +337,7 @@ class TurtlesimWorld(ScenarioTimes):
 
     def _spawn_default(self) -> LogSample:
         """turtle1 at the centre, heading east (turtlesim's start and /reset)."""
-        centre = CANVAS_M / 2.0
-        return self._spawn("", centre, centre, 0.0)[1]
+        return self._spawn("", CENTRE, CENTRE, 0.0)[1]
 
     def _spawn(self, name: str, x: float, y: float, theta: float) -> tuple[str, LogSample]:
         """turtle_frame.cpp's ``spawnTurtle`` for a free or empty name: an empty one becomes the next free turtleN."""
@@ -317,7 +346,7 @@ class TurtlesimWorld(ScenarioTimes):
             while f"turtle{self._id_counter}" in self.turtles:
                 self._id_counter += 1
             name = f"turtle{self._id_counter}"
-        self.turtles[name] = Turtle(name, x, CANVAS_M - y, theta)
+        self.turtles[name] = Turtle.spawned(name, x, y, theta)
         # spawnTurtle takes floats: its log line prints them rounded to float32.
         x32, y32, theta32 = struct.unpack("<3f", struct.pack("<3f", x, y, theta))
         return name, self._log(INFO, f"Spawning turtle [{name}] at x=[{x32:f}], y=[{y32:f}], theta=[{theta32:f}]")
@@ -374,22 +403,14 @@ class TurtlesimWorld(ScenarioTimes):
 
     @staticmethod
     def _set_pen(turtle: Turtle, request: Request) -> ServiceResult:
-        """set_pen: ``off`` lifts the pen and keeps its colour; otherwise a new pen (width 0 keeps Qt's default
-        cosmetic pen, 1 px wide)."""
-        turtle.pen_on = not request["off"]
-        if request["off"]:
-            return ServiceResult(True, {})
-        turtle.pen = (int(request["r"]), int(request["g"]), int(request["b"]))
-        turtle.pen_width = int(request["width"]) or 1
+        """set_pen: see ``Turtle.set_pen``."""
+        turtle.set_pen(request)
         return ServiceResult(True, {})
 
     @staticmethod
     def _teleport(turtle: Turtle, relative: bool, request: Request) -> ServiceResult:
         """teleport_absolute / teleport_relative: queued, applied at the start of the turtle's next update."""
-        if relative:
-            turtle.teleports.append((True, float(request["linear"]), 0.0, float(request["angular"])))
-        else:
-            turtle.teleports.append((False, float(request["x"]), float(request["y"]), float(request["theta"])))
+        turtle.queue_teleport(relative, request)
         return ServiceResult(True, {})
 
 

@@ -27,6 +27,8 @@ GROUND_TRUTH_FRAME = "world"
 TF_TOPIC = "/tf"
 
 
+NODE_NAME = "/gazebo"  # Gazebo's node publishes the simulated robot's topics
+
 class SimError(Exception):
     """A world that cannot be built as asked, or a call that breaks the world's contract (e.g. going back in time)."""
 
@@ -126,6 +128,11 @@ class World(ScenarioTimes):
     def command_topics(self) -> tuple[str, ...]:
         """Topics the robot's base listens on (the first is where scripted commands go by default)."""
         return self._topics
+
+    @property
+    def node_name(self) -> str:
+        """The ROS node that publishes this world's topics (the callerid recordings name)."""
+        return NODE_NAME
 
     @property
     def sim_clock(self) -> bool:

@@ -1,7 +1,9 @@
-"""Packages a student's launch file may name that are not theirs: simulator launch files mapped onto rosgrade robots.
+"""Packages a student's launch file may name that are not theirs: simulator launch files mapped onto rosgrade robots,
+and packages whose nodes the grader provides.
 
 ``$(find turtlebot3_gazebo)`` resolves to where Noetic installs it, and including one of its world launch files
-asks for a rosgrade world instead of Gazebo. Every other package is "not available in the grader".
+asks for a rosgrade world instead of Gazebo. turtlesim's nodes are started with ``<node pkg="turtlesim">``
+(``grader.launch.turtlesim``). Every other package is "not available in the grader".
 """
 from __future__ import annotations
 
@@ -50,10 +52,8 @@ WORLD_FILES: dict[tuple[str, str], WorldFile] = {
     ("husky_gazebo", "launch/husky_playpen.launch"): _husky(),
 }
 SIMULATED_PACKAGES = {package for package, _ in WORLD_FILES}
-NOT_YET = {
-    "turtlesim": "turtlesim is not a world of rosgrade yet: tasks that start turtlesim_node cannot be graded "
-                 "from a launch file today",
-}
+# Packages with nodes the grader provides but no files: <node pkg=...> works, $(find ...) does not.
+NODE_PACKAGES = {"turtlesim": ("turtlesim_node", "turtle_teleop_key")}
 
 
 def package_path(name: str) -> str:
@@ -65,8 +65,9 @@ def package_path(name: str) -> str:
 
 def not_available(name: str) -> str:
     """Why a package cannot be used in the grader, in one sentence."""
-    if name in NOT_YET:
-        return NOT_YET[name]
+    if name in NODE_PACKAGES:
+        return (f"package {name} has no files in the grader; start its nodes with <node pkg=\"{name}\" "
+                f"type=...> ({', '.join(NODE_PACKAGES[name])})")
     simulated = ", ".join(sorted(SIMULATED_PACKAGES))
     return (f"package {name} is not available in the grader: a launch file may use your own packages and the "
             f"world launch files of {simulated}")

@@ -2,7 +2,9 @@
 
 roslaunch finds ``type`` as an executable file anywhere in package ``pkg``; the usual mistakes (a ``pkg`` that is
 the folder's name rather than package.xml's, a ``type`` without ``.py``, a script without ``chmod +x``) get a
-message that says what roslaunch would have said and what to change.
+message that says what roslaunch would have said and what to change. turtlesim's nodes are the grader's
+(``grader.launch.turtlesim``): ``turtlesim_node`` is the world, not a process, and ``turtle_teleop_key`` runs the
+grader's script.
 """
 from __future__ import annotations
 
@@ -11,7 +13,7 @@ import stat
 from collections.abc import Mapping
 from pathlib import Path
 
-from grader.launch import known
+from grader.launch import known, turtlesim
 from grader.launch.model import Launch, LaunchError, LaunchNode
 from grader.runtime.scripts import SKIPPED_DIRS, candidates
 from grader.runtime.spec import NodeSpec
@@ -29,7 +31,7 @@ def _executable(path: Path) -> bool:
 def _package(node: LaunchNode, packages: Mapping[str, Path]) -> Path:
     if node.pkg in packages:
         return packages[node.pkg]
-    if node.pkg in known.NOT_YET or node.pkg in known.SIMULATED_PACKAGES:
+    if node.pkg in known.SIMULATED_PACKAGES:
         raise LaunchError(f"{node.where}: node {node.name} (pkg=\"{node.pkg}\" type=\"{node.type}\"): "
                           f"{known.not_available(node.pkg)}")
     # The script is in one of the student's packages: the usual slip is the folder's name instead of package.xml's.
@@ -66,9 +68,19 @@ def _script(node: LaunchNode, folder: Path, allow_not_executable: bool) -> tuple
     return script, notes
 
 
+def _provided(node: LaunchNode) -> Path:
+    """The grader's script for a node of a package whose nodes it provides (only turtle_teleop_key runs as one)."""
+    if node.type == turtlesim.TELEOP_NODE:
+        return turtlesim.TELEOP_SCRIPT
+    nodes = " and ".join(known.NODE_PACKAGES[node.pkg])
+    raise LaunchError(f"{node.where}: node {node.name}: type=\"{node.type}\" is not a node of {node.pkg} the grader "
+                      f"provides; it provides {nodes}")
+
+
 def node_specs(launch: Launch, packages: Mapping[str, Path], stdin: str | None = None,
                allow_not_executable: bool = False) -> tuple[tuple[NodeSpec, ...], list[str]]:
-    """One NodeSpec per ``<node>`` (every parameter of the launch, its remaps, name and namespace) and findings."""
+    """One NodeSpec per ``<node>`` (every parameter of the launch, its remaps, name and namespace) and findings;
+    a ``turtlesim_node`` starts none (it is the world), and the others get remaps to reach it where it is."""
     if not launch.nodes:
         raise LaunchError(f"{launch.file.name} starts no <node>: add a <node pkg=... type=... name=...> for your "
                           "script")
@@ -77,14 +89,24 @@ def node_specs(launch: Launch, packages: Mapping[str, Path], stdin: str | None =
                           "in one task")
     specs: list[NodeSpec] = []
     notes = list(launch.notes)
+    world = turtlesim.world_node(launch)
     for node in launch.nodes:
-        script, found = _script(node, _package(node, packages), allow_not_executable)
+        if world is not None and node is world.node:
+            continue  # the task's world, not a process
+        if node.pkg in known.NODE_PACKAGES and node.pkg not in packages:
+            script, found = _provided(node), []
+        else:
+            script, found = _script(node, _package(node, packages), allow_not_executable)
         notes += found
         if node.respawn:
             notes.append(f"{node.where}: respawn=\"true\" on {node.name} is not modelled: the grader does not "
                          "restart a node that ends.")
-        args = (*node.args, *(f"{source}:={target}" for source, target in node.remaps), f"__name:={node.name}")
+        remaps = turtlesim.bridge(node, world)
+        args = (*node.args, *(f"{source}:={target}" for source, target in remaps), f"__name:={node.name}")
         specs.append(NodeSpec(script=Path(os.path.abspath(script)), args=args, stdin=stdin,
                               ros_namespace=node.namespace.rstrip("/") or None,  # as roslaunch sets ROS_NAMESPACE
                               params=dict(launch.params), required=node.required, output=node.output))
+    if not specs:
+        raise LaunchError(f"{launch.file.name} starts only turtlesim_node ({world.node.where}): add a <node> for "
+                          "your script")
     return tuple(specs), notes

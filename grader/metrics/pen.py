@@ -1,35 +1,119 @@
-"""The turtlesim window's picture, redrawn from a recorded path: what the pen drew, as the world draws it.
+"""The turtlesim window's picture, redrawn from a recording: what every turtle's pen drew, as the world draws it.
 
-Scoring must depend on the recording alone, so coverage and the report's picture redraw the pen lines from the
-recorded poses (one line per update, from the previous pose to the next) on ``sim.turtle_canvas.Canvas`` with
-turtlesim's default pen, instead of reading the world's canvas. Pen colour changes, pen-off and teleports are not
-in the recorded poses, so the picture assumes the default pen throughout.
+Scoring must depend on the recording alone, so coverage and the report's picture replay the recording instead of
+reading the world's canvas. Each turtle's recorded poses (its ``<name>/pose``) are replayed in time order with the pen
+state the recorded service calls set, using the world's own ``Turtle`` and ``Canvas`` (``sim.turtlesim``,
+``sim.turtle_canvas``) so the lines are drawn exactly as the world draws them:
+
+- a served call takes effect at its time, after the updates published at that time (the session answers a call
+  once the world has run up to the caller's time): ``set_pen`` sets colour, width or pen-off; ``/clear`` clears to
+  the background; ``/reset`` clears, removes every turtle and puts turtle1 back at the centre with the default pen;
+  ``/spawn`` starts a turtle where it asked; ``/kill`` ends one;
+- a teleport is kept until the turtle's next pose and drawn then, with the pen of that moment (turtle.cpp applies
+  teleports at the start of its next update);
+- each pose draws the line from where the turtle was, unless the pose is where the turtle already is.
+
+turtle1 starts at its first recorded pose (the world's moves before that are not in the recording). Its positions
+come from ground truth (float64) when asked and recorded; spawned turtles have only their turtlesim/Pose (float32),
+so a pixel whose centre lies within about 1e-5 px of the edge of a spawned turtle's line may differ from the world's.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Literal
+
 import numpy as np
 
-from grader.metrics.run import Trajectory
-from sim.turtle_canvas import METER_PX, Canvas
-from sim.turtlesim import CANVAS_M, DEFAULT_PEN, DEFAULT_PEN_WIDTH
+from grader.metrics.run import TURTLE_POSE_TOPIC, RunData, ServiceCall, Trajectory
+from sim.turtle_canvas import Canvas
+from sim.turtlesim import CANVAS_M, CENTRE, DEFAULT_TURTLE, Turtle
+
+# (topic, x, y, theta) of one recorded pose
+Pose = tuple[str, float, float, float]
 
 
-def screen_px(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Canvas metres (y up) to the window's pixels (y down), as turtle.cpp converts them."""
-    return np.asarray(x) * METER_PX, (CANVAS_M - np.asarray(y)) * METER_PX
+@dataclass(frozen=True)
+class Drawing:
+    """The window at the end of a run: its canvas, and the turtles alive then, at their last recorded pose."""
+
+    canvas: Canvas
+    turtles: tuple[Turtle, ...]
 
 
-def redraw(path: Trajectory, pen_width: int = DEFAULT_PEN_WIDTH) -> Canvas:
-    """The canvas after the turtle drove ``path`` with its pen down from the first pose on."""
+def redraw(run: RunData, source: Literal["ground_truth", "odometry"] = "ground_truth") -> Drawing:
+    """Replay the run's poses and served calls; turtle1's poses are ``run.trajectory(source)``."""
+    paths = dict(run.poses)
+    first = run.trajectory(source)
+    if len(first):
+        paths[TURTLE_POSE_TOPIC] = first
     canvas = Canvas()
-    columns, rows = screen_px(path.x, path.y)
-    for i in range(1, len(path)):
-        start, end = (columns[i - 1], rows[i - 1]), (columns[i], rows[i])
-        if start != end:
-            canvas.line(start, end, DEFAULT_PEN, pen_width)
-    return canvas
+    live: dict[str, Turtle] = {}
+    if len(first):
+        live[DEFAULT_TURTLE] = Turtle.spawned(DEFAULT_TURTLE, float(first.x[0]), float(first.y[0]), float(first.yaw[0]))
+    for event in _events(paths, run.service_calls):
+        if isinstance(event, ServiceCall):
+            _serve(event, live, canvas)
+        else:
+            _move(event, live, canvas)
+    return Drawing(canvas, tuple(live[name] for name in sorted(live)))
 
 
-def painted(canvas: Canvas) -> np.ndarray:
-    """Per pixel [row, column]: the pen drew there (it differs from the background)."""
-    return np.any(canvas.pixels != np.asarray(canvas.background, dtype=np.uint8), axis=2)
+def _events(paths: dict[str, Trajectory], calls: tuple[ServiceCall, ...]) -> list[Pose | ServiceCall]:
+    """Poses and calls in the order the world saw them: by time; at one time the poses first, turtle by turtle in
+    topic order (the world updates turtles in name order, the same order for turtleN names), then the calls in the
+    order they were served."""
+    keyed: list[tuple[float, int, str, Pose | ServiceCall]] = []
+    for topic, path in paths.items():
+        keyed += [(t, 0, topic, (topic, x, y, yaw))
+                  for t, x, y, yaw in zip(path.t.tolist(), path.x.tolist(), path.y.tolist(), path.yaw.tolist())]
+    keyed += [(call.t, 1, "", call) for call in calls]
+    keyed.sort(key=lambda k: k[:3])  # stable: calls at one time keep their order
+    return [event for *_, event in keyed]
+
+
+def _move(pose: Pose, live: dict[str, Turtle], canvas: Canvas) -> None:
+    """One update of a turtle: its queued teleports, then the line to its new pose. A turtle no recorded call
+    started (a recording without service channels) begins at its first pose."""
+    topic, x, y, theta = pose
+    turtle = _turtle_serving(live, topic)
+    if turtle is None:
+        name = topic.removesuffix("/pose").lstrip("/")
+        live[name] = Turtle.spawned(name, x, y, theta)
+        return
+    turtle.apply_teleports(canvas)
+    if np.float32(turtle.x) == np.float32(x) and np.float32(turtle.y) == np.float32(y):
+        turtle.theta = theta  # not moved, at the precision of turtlesim/Pose: keep the exact position it has
+        return
+    old = (turtle.x, turtle.y_screen)
+    turtle.x, turtle.y_screen, turtle.theta = x, CANVAS_M - y, theta
+    turtle.draw(canvas, old)
+
+
+def _serve(call: ServiceCall, live: dict[str, Turtle], canvas: Canvas) -> None:
+    """What a call the world answered did to the turtles and the canvas (a failed call did nothing)."""
+    if call.response is None:
+        return
+    request = call.request
+    if call.service == "/clear":
+        canvas.clear()
+    elif call.service == "/reset":
+        live.clear()
+        live[DEFAULT_TURTLE] = Turtle.spawned(DEFAULT_TURTLE, CENTRE, CENTRE, 0.0)
+        canvas.clear()
+    elif call.service == "/spawn":
+        name = str(call.response["name"])
+        live[name] = Turtle.spawned(name, float(request["x"]), float(request["y"]), float(request["theta"]))
+    elif call.service == "/kill":
+        live.pop(str(request["name"]), None)
+    else:
+        turtle = _turtle_serving(live, call.service)
+        if turtle is not None and call.service == turtle.topic("set_pen"):
+            turtle.set_pen(request)
+        elif turtle is not None:
+            turtle.queue_teleport(call.service == turtle.topic("teleport_relative"), request)
+
+
+def _turtle_serving(live: dict[str, Turtle], name: str) -> Turtle | None:
+    """The live turtle whose topic or service ``name`` is (``/turtle2/pose``, ``/turtle2/set_pen``)."""
+    namespace = name.rpartition("/")[0]
+    return next((t for t in live.values() if t.topic("") == namespace + "/"), None)

@@ -12,6 +12,8 @@ import numpy as np
 DRIVER_CALLERID = "/rosgrade_driver"  # the grader's scripted driver; its commands are not the student's
 TURTLE_POSE_TOPIC = "/turtle1/pose"  # turtlesim's pose of turtle1 (turtlesim/Pose), its only odometry
 TURTLESIM_ID = "/gazebo"  # the callerid the world's channels are recorded with (turtlesim's too; no node may take it)
+TURTLE_POSE_TYPE = "turtlesim/Pose"
+SERVICE_PREFIX = "/rosgrade/service"  # <service>/request, then <service>/response or <service>/error (the session's)
 RUN_KEYS = ("shutdown_requested_s", "exit_code", "exit_signal", "status", "ended_s")
 
 
@@ -83,6 +85,17 @@ class Commands:
         return np.all(np.hstack([self.linear, self.angular]) == 0.0, axis=1)
 
 
+@dataclass(frozen=True)
+class ServiceCall:
+    """One call that reached a server of the world: sim time (s), the service's name, the request's fields by name,
+    and the response's (None when the server failed the call)."""
+
+    t: float
+    service: str
+    request: dict[str, Any]
+    response: dict[str, Any] | None
+
+
 # rospy's console prefix: "[INFO] [1795250908.523113, 21.060000]: " (wall and sim time) before the message.
 LOG_PREFIX = re.compile(
     r"^\s*\[\s*(?P<level>DEBUG|INFO|WARN|WARNING|ERROR|FATAL)\s*\]\s*(?:\[[^\]]*\]\s*:?)?\s?", re.I)
@@ -145,6 +158,8 @@ class RunData:
     run: RunInfo = field(default_factory=RunInfo)
     start_time: float = 0.0  # sim time (s) when the node was started
     shutdown_at: float | None = None  # scenario's Ctrl+C time, seconds after start
+    poses: dict[str, Trajectory] = field(default_factory=dict)  # turtlesim: each turtle's pose topic → its poses
+    service_calls: tuple[ServiceCall, ...] = ()  # in the order they were served
 
     def trajectory(self, source: Literal["ground_truth", "odometry"]) -> Trajectory:
         """The requested path; ground truth falls back to odometry when the recording has none."""
@@ -175,6 +190,8 @@ class RunData:
             run=RunInfo.from_metadata(getattr(recording, "metadata", None)),
             start_time=start_time,
             shutdown_at=shutdown_at,
+            poses=turtle_poses(recording),
+            service_calls=service_calls(recording),
         )
 
 
@@ -205,6 +222,39 @@ def _odometry(recording: Any) -> Trajectory:
         poses = [(t_ns / 1e9, m.x, m.y, m.theta) for t_ns, m in recording.messages(TURTLE_POSE_TOPIC, TURTLESIM_ID)]
         return Trajectory.of(*(zip(*poses) if poses else ([], [], [], [])), source="odometry")
     return _trajectory(recording.odometry(), "odometry")
+
+
+def turtle_poses(recording: Any) -> dict[str, Trajectory]:
+    """Every turtle's turtlesim/Pose topic the world published (spawned turtles have their own), by topic."""
+    topics = {i.topic for i in getattr(recording, "topics", list)()
+              if i.type == TURTLE_POSE_TYPE and i.callerid == TURTLESIM_ID and i.count}
+    poses = {}
+    for topic in sorted(topics):
+        rows = [(t_ns / 1e9, m.x, m.y, m.theta) for t_ns, m in recording.messages(topic, TURTLESIM_ID)]
+        poses[topic] = Trajectory.of(*zip(*rows), source="odometry")
+    return poses
+
+
+def service_calls(recording: Any) -> tuple[ServiceCall, ...]:
+    """The calls the world served, each request paired with the response or error recorded after it (a call is
+    answered before the next one is made); an error with no request is a call no server took (not served)."""
+    topics = {i.topic for i in getattr(recording, "topics", list)() if i.topic.startswith(SERVICE_PREFIX + "/")}
+    if not topics:
+        return ()
+    calls, open_requests = [], {}
+    for topic, t_ns, message in recording.messages_on(topics):
+        service, _, part = topic[len(SERVICE_PREFIX):].rpartition("/")
+        if part == "request":
+            open_requests[service] = (t_ns, _fields(message))
+        elif service in open_requests:
+            t_req, request = open_requests.pop(service)
+            calls.append(ServiceCall(t_req / 1e9, service, request, _fields(message) if part == "response" else None))
+    return tuple(calls)
+
+
+def _fields(message: Any) -> dict[str, Any]:
+    """A decoded message's fields by name."""
+    return {name: getattr(message, name) for name in message.__dataclass_fields__ if not name.startswith("__")}
 
 
 def _trajectory(series: Any, source: str) -> Trajectory:

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import json
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -113,6 +113,12 @@ class Recording:
         channels = [c for c in self._channels(topic) if callerid is None or c.callerid == callerid]
         for channel, t_ns, data in self._raw(channels):
             yield t_ns, self._source.deserialize(data, channel)
+
+    def messages_on(self, topics: Collection[str]) -> Iterator[tuple[str, int, object]]:
+        """(topic, log time ns, decoded message) for every message on any of ``topics``, in the order they were
+        recorded (which keeps the order of messages on different topics at one time, e.g. successive service calls)."""
+        for channel, t_ns, data in self._raw([c for c in self._channels() if c.topic in topics]):
+            yield channel.topic, t_ns, self._source.deserialize(data, channel)
 
     def _fast_ros1(self, channel: ChannelInfo) -> bool:
         """Whether the payloads are ROS 1 bytes of exactly the catalog's layout, so the struct decoders apply."""

@@ -1,13 +1,13 @@
-"""The turtlesim window at the end of a run, redrawn from the recording: the pen's picture with the turtle on it."""
+"""The turtlesim window at the end of a run, redrawn from the recording: the pens' picture with the turtles on it."""
 from __future__ import annotations
 
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
-from grader.metrics.pen import redraw, screen_px
-from grader.metrics.run import Trajectory
-from sim.turtle_canvas import CANVAS_PX
+from grader.metrics.pen import redraw
+from grader.metrics.run import RunData
+from sim.turtle_canvas import CANVAS_PX, METER_PX
 
 TURTLE_PX = 14.0  # the marker's length: about the turtle image's size in the window
 TURTLE_COLOUR = "#3c8c3c"
@@ -23,14 +23,16 @@ def turtle_outline(x_px: float, y_px: float, theta: float) -> np.ndarray:
     return np.array([nose, tail + side * TURTLE_PX * 0.4, tail + ahead * TURTLE_PX * 0.1, tail - side * TURTLE_PX * 0.4])
 
 
-def canvas_figure(path: Trajectory) -> Figure:
-    """The 500 × 500 px picture the window would show after ``path``, with the turtle where the run ended."""
+def canvas_figure(run: RunData) -> Figure:
+    """The 500 × 500 px picture the window would show at the end of ``run``, with each turtle alive then."""
+    drawing = redraw(run)
     figure = Figure(figsize=(5.0, 5.2))
     axes = figure.add_subplot()
-    axes.imshow(redraw(path).pixels, interpolation="nearest", extent=(-0.5, CANVAS_PX - 0.5, CANVAS_PX - 0.5, -0.5))
-    columns, rows = screen_px(path.x[-1:], path.y[-1:])
-    axes.add_patch(Polygon(turtle_outline(float(columns[0]), float(rows[0]), float(path.yaw[-1])), closed=True,
-                           facecolor=TURTLE_COLOUR, edgecolor="black", lw=0.8))
+    axes.imshow(drawing.canvas.pixels, interpolation="nearest",
+                extent=(-0.5, CANVAS_PX - 0.5, CANVAS_PX - 0.5, -0.5))
+    for turtle in drawing.turtles:
+        outline = turtle_outline(turtle.x * METER_PX, turtle.y_screen * METER_PX, turtle.theta)
+        axes.add_patch(Polygon(outline, closed=True, facecolor=TURTLE_COLOUR, edgecolor="black", lw=0.8))
     axes.set_xlim(-0.5, CANVAS_PX - 0.5)
     axes.set_ylim(CANVAS_PX - 0.5, -0.5)
     axes.set_xticks([])

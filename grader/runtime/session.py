@@ -29,7 +29,7 @@ from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from grader.runtime import world_codec
-from sim import CommandSample, TurtlesimWorld, World, WorldService, WorldTopic, open_world
+from sim import WORLD_NODE_NAMES, CommandSample, TurtlesimWorld, World, WorldService, WorldTopic, open_world
 
 # Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
 # published before that are lost. A new subscriber to a running publisher (Gazebo's /odom) gets the next message.
@@ -44,10 +44,9 @@ IGNORED_PREFIX = "/rosgrade/ignored"
 # A node's service calls are recorded under this prefix and the service's name: ``<service>/request`` (what the node
 # sent), then ``<service>/response`` (what the world answered) or ``<service>/error`` (why the call failed).
 SERVICE_PREFIX = "/rosgrade/service"
-WORLD_CALLERID = "/gazebo"
 DRIVER_CALLERID = "/rosgrade_driver"
-# Names of the grader's own nodes (and real ROS's /rosout): a student node may not take them.
-RESERVED_NAMES = frozenset({WORLD_CALLERID, DRIVER_CALLERID, "/rosout"})
+# Names of the grader's own nodes (each world's node and real ROS's /rosout): a student node may not take them.
+RESERVED_NAMES = frozenset({*WORLD_NODE_NAMES, DRIVER_CALLERID, "/rosout"})
 TWIST = "geometry_msgs/Twist"
 # Wall seconds the runtime waits for a process to go once its channel has closed, before killing it.
 EXIT_WAIT_WALL_S = 5.0
@@ -380,14 +379,14 @@ class Session:
             return reply
         data = world_codec.response_bytes(self.catalog, served.type, result.response)
         self._recorder.write(f"{SERVICE_PREFIX}{served.name}/response", served.type + "Response", data, t,
-                             callerid=WORLD_CALLERID, origin="world")
+                             callerid=self.world.node_name, origin="world")
         return ServiceReply(ch.SERVICE_OK, response=data)
 
     def _record_failure(self, service: str, reply: ServiceReply, t: int) -> None:
         """Why a call failed, as ``status`` or ``status: the server's text`` (std_msgs/String)."""
         text = f"{reply.status}: {reply.error}" if reply.error else reply.status
         self._recorder.write(f"{SERVICE_PREFIX}{service}/error", "std_msgs/String", string_bytes(text), t,
-                             callerid=WORLD_CALLERID, origin="world")
+                             callerid=self.world.node_name, origin="world")
 
     def _take_declarations(self) -> None:
         """What the world publishes now: at the start, and again after a service call (spawn and kill change it)."""
@@ -542,7 +541,7 @@ class Session:
             return
         publication = self.publications[sample.topic]
         data = world_codec.encode(sample, self._next_seq(sample.topic))
-        self._recorder.write(sample.topic, publication.type, data, sample.t_ns, callerid=WORLD_CALLERID,
+        self._recorder.write(sample.topic, publication.type, data, sample.t_ns, callerid=self.world.node_name,
                              origin="world")
         if publication.to_nodes:
             self._deliver(sample.topic, publication.type, data)

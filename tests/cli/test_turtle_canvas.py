@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.image import imread
 
-from grader.metrics.run import Trajectory
+from grader.metrics.run import RunData, Trajectory
 from grader.reports.canvas import canvas_figure, turtle_outline
 from grader.reports.plots import task_plots
 
@@ -41,7 +41,7 @@ def test_turtlebot_runs_get_no_window_picture() -> None:
 def test_the_picture_shows_the_pen_on_turtlesims_background() -> None:
     path = Trajectory.of([0, 1], [2.0, 9.0], [5.5, 5.5], [0.0, 0.0])
     buffer = io.BytesIO()
-    canvas_figure(path).savefig(buffer, format="png", dpi=100)
+    canvas_figure(RunData(odometry=path)).savefig(buffer, format="png", dpi=100)
     pixels = (imread(io.BytesIO(buffer.getvalue()))[..., :3] * 255).round().astype(int)
     colours = {tuple(c) for c in pixels.reshape(-1, 3)}
     assert (69, 86, 255) in colours and (179, 184, 255) in colours  # background and pen

@@ -41,6 +41,8 @@ SUCCESS_CASES = [
     ("anon.launch", {}),
     ("scopes.launch", {}),
     ("scopes.launch", {"speed": "0.05"}),
+    ("turtlesim.launch", {}),
+    ("turtlesim.launch", {"teleop": "1"}),
 ]
 ERROR_CASES = [
     ("errors/unused_include_arg.launch", {}),

@@ -22,8 +22,11 @@ def test_the_wiki_move_node_drives_its_distance_on_turtlesim(tmp_path):
     result = run(spec, tmp_path / "run.mcap", tmp_path / "run.log")
     assert result.nodes[0].status == "exited", result.nodes[0].message
     assert "start time is zero: False wallclock: True" in (tmp_path / "run.log").read_text()
-    truth = Recording.open(tmp_path / "run.mcap").ground_truth()
+    recording = Recording.open(tmp_path / "run.mcap")
+    truth = recording.ground_truth()
     assert truth.x[-1] - truth.x[0] == pytest.approx(2.0, abs=0.05)
+    # turtlesim's own node publishes the world's topics (a robot's are Gazebo's)
+    assert {t.callerid for t in recording.topics() if t.topic == "/turtle1/pose"} == {"/turtlesim"}
 
 
 def test_robot_runs_keep_sim_time(tmp_path):

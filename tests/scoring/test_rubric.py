@@ -26,6 +26,7 @@ CONTRACT = {
     "turtle_triangle": ["sides_equal", "turn_angle", "closure", "stops"],
     "turtle_goal": ["reaches_goal", "stops", "no_wall_hit"],
     "turtle_clean": ["coverage", "no_wall_hit", "finishes"],
+    "turtle_launch": ["drives", "direction", "turns"],
 }
 
 MINIMAL = '''

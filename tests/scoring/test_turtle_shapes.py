@@ -9,8 +9,8 @@ from scoring_synth import run
 
 from grader.metrics import MetricError, OutputLine
 from grader.metrics import coverage, goal, polygon, wall_hits
-from grader.metrics.pen import painted, redraw
-from grader.metrics.run import Trajectory
+from grader.metrics.pen import redraw
+from grader.metrics.run import RunData, Trajectory
 
 TURN = math.radians(60)  # rad/s
 
@@ -52,7 +52,7 @@ def test_the_goal_is_measured_at_the_end_and_at_the_closest() -> None:
 
 def test_redraw_paints_a_3_px_line_along_the_path() -> None:
     line = Trajectory.of([0, 1], [1.0, 3.0], [5.0, 5.0], [0.0, 0.0])
-    paint = painted(redraw(line))
+    paint = redraw(RunData(odometry=line)).canvas.inked
     assert paint.sum() == pytest.approx(3 * (2 * 45 + 3), abs=6)  # 90 px long plus the square caps, 3 px wide
     row = int(round((11.088889 - 5.0) * 45))
     assert paint[row, 45 + 10] and not paint[row + 3, 45 + 10]

@@ -1,0 +1,105 @@
+"""turtlesim's nodes in a student's launch file: ``turtlesim_node`` is rosgrade's turtlesim world, and
+``turtle_teleop_key`` a node the grader ships (``grader/nodes/turtle_teleop_key.py``), run confined like the
+student's nodes.
+
+The world's topics and services have the names ``turtlesim_node`` has in the root namespace (``/turtle1/cmd_vel``,
+``/spawn``...). When the launch file starts it elsewhere (``ns=``, a ``<group ns>``, ``<remap>``), every other node
+gets remaps that bridge the two: the name the launched turtlesim would use (``/sim/turtle1/cmd_vel``) leads to the
+world's, and the world's own name, which nothing would serve in real ROS, to an unserved one, so a node in the wrong
+namespace reaches no turtle, as with roslaunch. rospy applies one remap per name, so a node's own ``<remap>`` whose
+target is one of these names is rewritten to where the bridge leads.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from grader.launch import names
+from grader.launch.model import Launch, LaunchError, LaunchNode
+
+PACKAGE = "turtlesim"
+WORLD_NODE = "turtlesim_node"
+TELEOP_NODE = "turtle_teleop_key"
+TELEOP_SCRIPT = Path(__file__).resolve().parents[1] / "nodes" / "turtle_teleop_key.py"
+ROBOT = "turtlesim"  # the rubric robot that is turtlesim's world
+# turtle_frame.cpp's services and turtle1's topics and services, relative to turtlesim_node's namespace.
+WORLD_NAMES = ("clear", "reset", "spawn", "kill", "turtle1/cmd_vel", "turtle1/pose", "turtle1/color_sensor",
+               "turtle1/set_pen", "turtle1/teleport_absolute", "turtle1/teleport_relative")
+UNSERVED = "/no_turtlesim_here"  # where a world name goes when the launched turtlesim does not use it
+
+
+@dataclass(frozen=True)
+class TurtlesimNode:
+    """The launch file's ``turtlesim_node`` and the names it would use that differ from the world's."""
+
+    node: LaunchNode
+    launched: dict[str, str]  # world name (/turtle1/cmd_vel) -> the launched node's name for it (/sim/turtle1/cmd_vel)
+
+
+def resolve(node: LaunchNode, name: str) -> str:
+    """``name`` as the node resolves it: global, private (``~``) to the node, or relative to its namespace."""
+    if name.startswith("~"):
+        return names.canonical(f"{node.full_name}/{name[1:]}")
+    return names.canonical(names.join(node.namespace, name))
+
+
+def world_node(launch: Launch) -> TurtlesimNode | None:
+    """The launch file's turtlesim_node (None without one); LaunchError for two, or a remap that merges names."""
+    started = [n for n in launch.nodes if n.pkg == PACKAGE and n.type == WORLD_NODE]
+    if not started:
+        return None
+    if len(started) > 1:
+        lines = ", ".join(str(n.where) for n in started)
+        raise LaunchError(f"{started[1].where}: the launch file starts turtlesim_node {len(started)} times ({lines}); "
+                          "the grader runs one turtlesim window: start it once and spawn more turtles with /spawn")
+    node = started[0]
+    remaps = {resolve(node, source): resolve(node, target) for source, target in node.remaps}
+    launched = {}
+    for leaf in WORLD_NAMES:
+        name = resolve(node, leaf)
+        launched["/" + leaf] = remaps.get(name, name)
+    if len(set(launched.values())) < len(launched):
+        raise LaunchError(f"{node.where}: the remaps of turtlesim_node give two of its topics or services the same "
+                          "name; the grader cannot run turtlesim that way")
+    return TurtlesimNode(node, {world: name for world, name in launched.items() if world != name})
+
+
+def bridge(node: LaunchNode, turtlesim: TurtlesimNode | None) -> tuple[tuple[str, str], ...]:
+    """The node's remaps with the bridge to the world's names added (its own remaps first, their targets bridged)."""
+    if turtlesim is None or not turtlesim.launched:
+        return node.remaps
+    leads = {launched: world for world, launched in turtlesim.launched.items()}
+    for world in turtlesim.launched:
+        if world not in leads:
+            leads[world] = UNSERVED + world
+    own = [(source, leads.get(resolve(node, target), target)) for source, target in node.remaps]
+    remapped = {resolve(node, source) for source, _ in node.remaps}
+    return (*own, *((source, target) for source, target in sorted(leads.items()) if source not in remapped))
+
+
+def check_robot(launch: Launch, turtlesim: TurtlesimNode | None, robot: str) -> list[str]:
+    """Findings on the world the launch file starts against the task's robot; LaunchError when they cannot meet."""
+    if turtlesim is not None and robot != ROBOT:
+        raise LaunchError(f"{turtlesim.node.where}: the launch file starts turtlesim_node, but this task is graded "
+                          f"on a {robot}, not on turtlesim: remove the turtlesim node (a {robot} listens on /cmd_vel)")
+    if robot != ROBOT:
+        return []
+    if launch.worlds:
+        world = launch.worlds[0]
+        raise LaunchError(f"{world.where}: {world.package}/{world.file} starts Gazebo with a {world.robot}, but this "
+                          "task is graded on turtlesim: start <node pkg=\"turtlesim\" type=\"turtlesim_node\" "
+                          "name=\"sim\"/> instead")
+    notes = []
+    if turtlesim is None:
+        notes.append(f"{launch.file.name} starts no turtlesim_node, so roslaunch alone would show no turtle; the "
+                     "grader ran turtlesim anyway. Add <node pkg=\"turtlesim\" type=\"turtlesim_node\" name=\"sim\"/>.")
+    elif turtlesim.launched:
+        moved = ", ".join(f"{turtlesim.launched[w]} (recorded as {w})" for w in ("/turtle1/cmd_vel", "/turtle1/pose")
+                          if w in turtlesim.launched)
+        notes.append(f"{turtlesim.node.where}: turtlesim_node runs as {turtlesim.node.full_name}, so its turtle uses "
+                     f"{moved or 'other service names'}, as with roslaunch; turtlesim's usual names reach no turtle.")
+    private = sorted(k for k in launch.params if k.startswith(turtlesim.node.full_name + "/")) if turtlesim else []
+    if private:
+        notes.append(f"{turtlesim.node.where}: {', '.join(private)} set on turtlesim_node are not modelled: the "
+                     "grader's turtlesim keeps its default background colour.")
+    return notes
