@@ -174,7 +174,6 @@ class NodeProcess:
         os.close(node_to_grader_w)
         self.read_fd = node_to_grader_r
         self.write_fd = grader_to_node_w
-        self._sandbox_ns: str | None = None
         if spec.stdin is not None:
             try:
                 self.popen.stdin.write(spec.stdin.encode())
@@ -204,14 +203,20 @@ class NodeProcess:
         """Every process that belongs to this node and still exists (zombies included), by /proc."""
         found: set[int] = set()
         if self.plan.sandboxed:
-            if self._sandbox_ns is None:
-                init = self._sandbox_init()
-                self._sandbox_ns = confine.pid_namespace(init) if init else None
+            # By namespace only while the sandbox's init is alive, never by a namespace id remembered from earlier:
+            # a PID namespace ends with its init, and the kernel gives its id to the next namespace made (another
+            # student's node in a batch), whose processes would then be taken for this node's and killed.
+            init = self._sandbox_init()
+            sandbox_ns = confine.pid_namespace(init) if init else None
             own = confine.pid_namespace(os.getpid())
-            for pid in confine.processes():
+            in_sandbox = set()
+            for pid in confine.processes() if sandbox_ns is not None else ():
                 ns = confine.pid_namespace(pid)
-                if ns is not None and ns != own and ns == self._sandbox_ns:
-                    found.add(pid)
+                if ns is not None and ns != own and ns == sandbox_ns:
+                    in_sandbox.add(pid)
+            # Still the same init afterwards: the namespace lived through the whole scan, so its id was not reused.
+            if in_sandbox and self._sandbox_init() == init and confine.pid_namespace(init) == sandbox_ns:
+                found.update(in_sandbox)
         else:
             found.update(self._orphans())
         marker = f"{MARKER_ENV}={self.marker}".encode()

@@ -1,14 +1,18 @@
 """How the isolation mode is chosen and reported, and the refusal to run student code as root."""
 from __future__ import annotations
 
+import io
 import sys
 import types
 from pathlib import Path
 
 import pytest
+from rich.console import Console
 
 from grader.report import SubmissionReport
+from grader.reports.html import render_html
 from grader.reports.markdown import render_markdown
+from grader.reports.table import print_report
 from grader.runtime import confine, ns_init
 
 
@@ -68,6 +72,18 @@ def test_namespaced_plans_say_their_isolation(capability, tmp_path):
 def test_the_markdown_report_names_the_isolation():
     report = SubmissionReport(submission="s", isolation=confine.ISOLATION["rlimits"])
     assert "nodes isolated by rlimits only (no isolation)" in render_markdown(report).splitlines()[2]
+
+
+@pytest.mark.parametrize("mode", list(confine.ISOLATION))
+def test_the_html_report_and_the_console_name_the_isolation(mode):
+    report = SubmissionReport(submission="s", isolation=confine.ISOLATION[mode])
+    page = render_html(report)
+    said = f"Nodes isolated by {confine.ISOLATION[mode]}."
+    assert said in page
+    assert (f'<p class="warn">{said}' in page) == (mode == "rlimits" or mode == "uid")  # the weaker modes stand out
+    console = Console(file=io.StringIO(), width=200)
+    print_report(console, report)
+    assert said in console.file.getvalue().splitlines()[-1]
 
 
 def test_mount_points_with_spaces_are_read_back():
