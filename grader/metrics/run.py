@@ -11,7 +11,6 @@ import numpy as np
 
 DRIVER_CALLERID = "/rosgrade_driver"  # the grader's scripted driver; its commands are not the student's
 TURTLE_POSE_TOPIC = "/turtle1/pose"  # turtlesim's pose of turtle1 (turtlesim/Pose), its only odometry
-TURTLESIM_ID = "/gazebo"  # the callerid the world's channels are recorded with (turtlesim's too; no node may take it)
 TURTLE_POSE_TYPE = "turtlesim/Pose"
 SERVICE_PREFIX = "/rosgrade/service"  # <service>/request, then <service>/response or <service>/error (the session's)
 RUN_KEYS = ("shutdown_requested_s", "exit_code", "exit_signal", "status", "ended_s")
@@ -219,19 +218,18 @@ def _lines(recording: Any) -> tuple[OutputLine, ...]:
 def _odometry(recording: Any) -> Trajectory:
     """What the node could see of its pose: nav_msgs/Odometry, or in turtlesim (which has none) turtle1/pose."""
     if getattr(recording, "odometry_topic", lambda: "")() is None:
-        poses = [(t_ns / 1e9, m.x, m.y, m.theta) for t_ns, m in recording.messages(TURTLE_POSE_TOPIC, TURTLESIM_ID)]
+        poses = [(t_ns / 1e9, m.x, m.y, m.theta) for t_ns, m in recording.world_messages(TURTLE_POSE_TOPIC)]
         return Trajectory.of(*(zip(*poses) if poses else ([], [], [], [])), source="odometry")
     return _trajectory(recording.odometry(), "odometry")
 
 
 def turtle_poses(recording: Any) -> dict[str, Trajectory]:
     """Every turtle's turtlesim/Pose topic the world published (spawned turtles have their own), by topic."""
-    topics = {i.topic for i in getattr(recording, "topics", list)()
-              if i.type == TURTLE_POSE_TYPE and i.callerid == TURTLESIM_ID and i.count}
     poses = {}
-    for topic in sorted(topics):
-        rows = [(t_ns / 1e9, m.x, m.y, m.theta) for t_ns, m in recording.messages(topic, TURTLESIM_ID)]
-        poses[topic] = Trajectory.of(*zip(*rows), source="odometry")
+    for topic in getattr(recording, "world_topics", lambda _: [])(TURTLE_POSE_TYPE):
+        rows = [(t_ns / 1e9, m.x, m.y, m.theta) for t_ns, m in recording.world_messages(topic)]
+        if rows:
+            poses[topic] = Trajectory.of(*zip(*rows), source="odometry")
     return poses
 
 

@@ -114,6 +114,16 @@ class Recording:
         for channel, t_ns, data in self._raw(channels):
             yield t_ns, self._source.deserialize(data, channel)
 
+    def world_messages(self, topic: str) -> Iterator[tuple[int, object]]:
+        """Like ``messages``, but only what the simulated world published on ``topic`` (every channel of a bag that
+        does not say who published what): a node's look-alike channel, whatever name it took, is left out."""
+        for channel, t_ns, data in self._raw(self._world_channels(topic)):
+            yield t_ns, self._source.deserialize(data, channel)
+
+    def world_topics(self, type_name: str) -> list[str]:
+        """The topics of ``type_name`` the world published (see ``world_messages``), sorted."""
+        return sorted({c.topic for c in self._world_channels(type_name=type_name)})
+
     def messages_on(self, topics: Collection[str]) -> Iterator[tuple[str, int, object]]:
         """(topic, log time ns, decoded message) for every message on any of ``topics``, in the order they were
         recorded (which keeps the order of messages on different topics at one time, e.g. successive service calls)."""

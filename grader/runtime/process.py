@@ -148,6 +148,9 @@ class NodeProcess:
         env = node_environment(spec, f"{grader_to_node_r},{node_to_grader_w}", self.plan.home)
         env[MARKER_ENV] = self.marker
         pairs = rlimit_pairs(limits, nproc)
+        # The grader's children from before this node (a pool's other workers, a test's helper process): never
+        # this node's orphans, even when they started in the same clock tick as the node.
+        self._children_before = frozenset(confine.children_of(os.getpid()))
         self.raw_path = raw_output
         self._raw = open(raw_output, "wb")
         try:
@@ -240,7 +243,8 @@ class NodeProcess:
     def _orphans(self) -> list[int]:
         """Children of the grader started since this node that are no node: what a node double-forked away."""
         return [pid for pid in confine.children_of(os.getpid())
-                if pid not in NodeProcess._open and (confine.started_at(pid) or 0) >= self._started]
+                if pid not in NodeProcess._open and pid not in self._children_before
+                and (confine.started_at(pid) or 0) >= self._started]
 
     def _reap_orphans(self) -> None:
         for pid in self._orphans():

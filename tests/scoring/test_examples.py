@@ -25,8 +25,11 @@ def _reference_scripts(task: str) -> list[Path]:
         return [folder / node.script for node in rubric.nodes]
     from grader.launch import find_packages, read_launch
 
-    launch = read_launch(folder / "launch" / rubric.launch.file, rubric.launch.args, find_packages(folder))
-    return [folder / node.type for node in launch.nodes]
+    packages = find_packages(folder)
+    launch = read_launch(next(folder.rglob(rubric.launch.file)), rubric.launch.args, packages)
+    # the student's own nodes (turtlesim's are the world and the grader's), else every script of its packages
+    started = [next(packages[node.pkg].rglob(node.type)) for node in launch.nodes if node.pkg in packages]
+    return started or [script for package in packages.values() for script in package.rglob("*.py")]
 
 
 @pytest.mark.parametrize("task", sorted(RUBRICS))
