@@ -4,7 +4,6 @@
 """
 from __future__ import annotations
 
-import importlib
 import sys
 from pathlib import Path
 
@@ -17,9 +16,6 @@ from grader.cli import main  # noqa: E402
 
 
 def install_fakes() -> None:
-    # The real modules first, as in the in-process tests: some bind names from grader.rubric when imported
-    # (grader.taskfit's Rubric), which the fake rubric module does not have; at run time they call the fakes.
-    importlib.import_module("grader.batch")
     for name, module in (("grader.grading", fakes.grading_module()), ("grader.rubric", fakes.rubric_module()),
                          ("grader.scoring", fakes.scoring_module()), ("grader.recording", fakes.recording_module())):
         sys.modules[name] = module
