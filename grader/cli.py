@@ -531,6 +531,11 @@ def _tolerance_text(tolerance: Any) -> str:
     return f"{full} ±{tolerance.margin:g}" + ("" if tolerance.sigmoid == "linear" else f" {tolerance.sigmoid}")
 
 
+def _start_pose(scenario: Any) -> tuple[float, float, float]:
+    pose = _module("sim.worlds").start_pose(scenario)
+    return pose.x, pose.y, pose.yaw
+
+
 def rubric_plan(rubric: Any) -> dict[str, Any]:
     """What a rubric will run and score, as data (for `rubric check` and its --json)."""
     return {
@@ -539,10 +544,10 @@ def rubric_plan(rubric: Any) -> dict[str, Any]:
         "nodes": [{"script": n.script, "aliases": n.aliases, "args": n.args} for n in rubric.nodes],
         "sim_seconds": sum(s.duration for s in rubric.scenarios),
         "scenarios": [{
-            "name": s.name, "description": s.description, "start_pose": [s.initial_pose.x, s.initial_pose.y,
-                                                                          s.initial_pose.yaw],
+            "name": s.name, "description": s.description, "start_pose": list(_start_pose(s)),
             "start_time": s.start_time, "duration": s.duration, "shutdown_at": s.shutdown_at,
             "imperfections": s.imperfections.model_dump(), "scripted_commands": len(s.script),
+            "stdin": s.stdin, "params": s.params,
         } for s in rubric.scenarios],
         "criteria": [{
             "id": c.id, "title": c.title, "points": c.points, "visibility": c.visibility, "metric": c.metric,
@@ -570,7 +575,9 @@ def cmd_rubric_check(args: argparse.Namespace) -> int:
         x, y, yaw = s["start_pose"]
         other = [f"{k} {v:g}" for k, v in s["imperfections"].items() if v]
         other += [f"{s['scripted_commands']} scripted commands"] if s["scripted_commands"] else []
-        runs.add_row(Text(s["name"]), f"{x:g}, {y:g}, {math.degrees(yaw):.0f}°", f"{s['start_time']:g} s",
+        other += [f"stdin {s['stdin']!r}"] if s["stdin"] is not None else []
+        other += [f"{k} {v}" for k, v in s["params"].items()]
+        runs.add_row(Text(s["name"]), f"{fmt_number(x)}, {fmt_number(y)}, {math.degrees(yaw):.0f}°", f"{s['start_time']:g} s",
                      f"{s['duration']:g} s", "-" if s["shutdown_at"] is None else f"at {s['shutdown_at']:g} s",
                      Text(", ".join(other) or "-"))
     console.print(runs)

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from sim import turtlesim, world
-from sim.scenario import TURTLESIM, Scenario
+from sim.scenario import TURTLESIM, Pose2D, Scenario
 from sim.turtlesim import TurtlesimWorld
 from sim.world import World
 
@@ -12,3 +12,11 @@ WORLD_NODE_NAMES = frozenset({world.NODE_NAME, turtlesim.NODE_NAME})  # the node
 def open_world(scenario: Scenario) -> World | TurtlesimWorld:
     """The world that runs ``scenario`` (both keep the contract in DEVELOPERS.md, so callers need not know which)."""
     return TurtlesimWorld(scenario) if scenario.robot == TURTLESIM else World(scenario)
+
+
+def start_pose(scenario: Scenario) -> Pose2D:
+    """Where the run starts: the scenario's ``initial_pose``, except that turtlesim spawns turtle1 at the centre of
+    its window when the scenario names none."""
+    if scenario.robot == TURTLESIM and "initial_pose" not in scenario.model_fields_set:
+        return Pose2D(x=turtlesim.CENTRE, y=turtlesim.CENTRE, yaw=0.0)
+    return scenario.initial_pose

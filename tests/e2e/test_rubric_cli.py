@@ -87,3 +87,12 @@ def test_try_reports_a_plugin_that_crashes_on_the_run_as_the_criterion_feedback(
 def test_try_rejects_a_submission_path_that_does_not_exist(tmp_path: Path, capsys) -> None:
     assert main(["rubric", "try", str(SPIRAL / "spiral.toml"), str(tmp_path / "nothing.py")]) == EXIT_ERROR
     assert "no such file or folder" in capsys.readouterr().err
+
+
+def test_rubric_check_shows_where_turtlesim_really_starts_and_what_each_run_types(capsys):
+    assert main(["rubric", "check", str(Path(__file__).resolve().parents[2] / "rubrics" / "turtle_move.toml"),
+                 "--json"]) == 0
+    plan = json.loads(capsys.readouterr().out)
+    runs = {s["name"]: s for s in plan["scenarios"]}
+    assert runs["nominal"]["start_pose"] == pytest.approx([5.544445, 5.544445, 0.0], abs=1e-5)  # the window's centre
+    assert runs["backwards"]["stdin"].endswith("0\n") and runs["backwards"]["params"]["forward"] is False
