@@ -10,6 +10,8 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path, PurePosixPath
 
+from grader.runtime.confine import exited
+
 MAX_UNPACKED_BYTES = 200 * 1024 * 1024
 MAX_MEMBERS = 20_000
 STAGE_PREFIX = "rosgrade-grade-"  # a batch's submissions are unpacked at <tmp>/rosgrade-grade-<content hash>
@@ -125,15 +127,7 @@ def remove_if_abandoned(folder: Path) -> bool:
     except PermissionError:  # alive, as another user
         return False
     else:
-        if not _is_zombie(owner):
+        if not exited(owner):
             return False
     shutil.rmtree(folder, ignore_errors=True)
     return not folder.exists()
-
-
-def _is_zombie(pid: int) -> bool:
-    """Whether pid has exited but not been reaped (Linux /proc; elsewhere: no)."""
-    try:
-        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] in ("Z", "X")
-    except (OSError, IndexError):
-        return False

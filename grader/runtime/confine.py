@@ -482,6 +482,15 @@ def status_fields(pid: int) -> dict[str, str]:
     return fields
 
 
+def exited(pid: int) -> bool:
+    """Whether pid is gone or has exited without being reaped yet (a zombie): nothing of it runs any more.
+    Without /proc (not Linux) nothing can be told, and the process counts as running."""
+    state = status_fields(pid).get("State")
+    if state is None:
+        return os.path.isdir("/proc/self")
+    return state.startswith(("Z", "X"))
+
+
 def _stat_field(pid: int, index: int) -> int | None:
     """A numeric field of /proc/<pid>/stat, counted after the name (which may hold spaces and parentheses)."""
     data = _read(f"/proc/{pid}/stat")

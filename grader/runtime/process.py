@@ -149,8 +149,9 @@ class NodeProcess:
         env[MARKER_ENV] = self.marker
         pairs = rlimit_pairs(limits, nproc)
         # The grader's children from before this node (a pool's other workers, a test's helper process): never
-        # this node's orphans, even when they started in the same clock tick as the node.
-        self._children_before = frozenset(confine.children_of(os.getpid()))
+        # this node's orphans, even when they started in the same clock tick as the node. Orphans are looked for
+        # only without a sandbox, so only then is the /proc scan worth making.
+        self._children_before = frozenset() if self.plan.sandboxed else frozenset(confine.children_of(os.getpid()))
         self.raw_path = raw_output
         self._raw = open(raw_output, "wb")
         try:
@@ -270,8 +271,7 @@ class NodeProcess:
     def _own_processes(self) -> list[int]:
         """The node's live processes, without the sandbox's own (bwrap or unshare, and the pid 1 under it)."""
         skip = {self.popen.pid, self._sandbox_init() if self.plan.sandboxed else None}
-        return [p for p in self.leftovers() if p not in skip
-                and not confine.status_fields(p).get("State", "Z").startswith("Z")]
+        return [p for p in self.leftovers() if p not in skip and not confine.exited(p)]
 
     def usage(self) -> Usage:
         """What all of the node's processes use together now: memory (with its private /tmp and /dev/shm files),
@@ -335,7 +335,7 @@ class NodeProcess:
                     os.killpg(self.popen.pid, signal.SIGKILL)
                 except (ProcessLookupError, PermissionError):
                     pass
-            left = [p for p in self.leftovers() if not confine.status_fields(p).get("State", "Z").startswith("Z")]
+            left = [p for p in self.leftovers() if not confine.exited(p)]
             for pid in left:
                 try:
                     os.kill(pid, signal.SIGKILL)
