@@ -9,7 +9,7 @@ from typing import Annotated
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from grader.nodelib import rosgrade_channel as ch
+from grader.nodelib.common import rosgrade_channel as ch
 
 MAX_ARGV = 256
 

@@ -13,7 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from grader import timing
-from grader.nodelib import rosgrade_channel as ch
+from grader.nodelib.common import rosgrade_channel as ch
 from grader.recording import MessageCatalog, RecordingError
 from grader.runtime import frames
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from grader.runtime import confine
+from grader.nodelib import pythonpath
 from grader.runtime.spec import Limits, NodeSpec
 
 try:
@@ -19,7 +20,6 @@ try:
 except ImportError:  # Windows: no rlimits; the grader's own watchdogs still apply
     resource = None  # type: ignore[assignment]
 
-NODELIB = Path(__file__).resolve().parents[1] / "nodelib"
 # Every node process (and whatever it starts without clearing its environment) carries this variable, so leftovers
 # can be found through /proc even when they left the node's process group. Its value starts with the grader's pid
 # (see marker_prefix), so one grader's leftovers are told apart from those of other graders on the same machine.
@@ -46,7 +46,7 @@ def node_environment(spec: NodeSpec, channel: str, home: Path | str) -> dict[str
     env.update(
         HOME=str(home),
         TMPDIR=str(home),
-        PYTHONPATH=str(NODELIB),
+        PYTHONPATH=pythonpath(spec.flavour),
         PYTHONDONTWRITEBYTECODE="1",
         PYTHONNOUSERSITE="1",
         # Set iteration order (and so anything a node prints from a set) must not vary between runs.

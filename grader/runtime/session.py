@@ -18,7 +18,7 @@ from typing import TextIO
 import mujoco
 
 from grader import __version__, timing
-from grader.nodelib import rosgrade_channel as ch
+from grader.nodelib.common import rosgrade_channel as ch
 from grader.recording import Recorder, default_catalog, decode_twist, log_bytes, string_bytes, twist_bytes
 from grader.runtime import confine
 from grader.runtime.diagnostics import diagnose, topic_summary

@@ -51,6 +51,8 @@ class NodeSpec:
     # output "log" prints to its own log file instead of the run's log (the recording holds its text either way).
     required: bool = False
     output: Literal["screen", "log"] = "screen"
+    # Which client library the script imports (rospy: "ros1", rclpy: "ros2"): its import root and wire format.
+    flavour: Literal["ros1", "ros2"] = "ros1"
 
 
 @dataclass(frozen=True)

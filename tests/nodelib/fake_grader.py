@@ -9,9 +9,10 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from grader.nodelib import rosgrade_channel as ch
+from grader.nodelib import pythonpath
+from grader.nodelib.common import rosgrade_channel as ch
 
-NODELIB = Path(__file__).resolve().parents[2] / "grader" / "nodelib"
+NODELIB_PATH = pythonpath("ros1")
 PROBES = Path(__file__).resolve().parent / "probes"
 TICK = ch.CLOCK_PERIOD_NS
 
@@ -79,7 +80,7 @@ class FakeGrader:
         node_r, grader_w = os.pipe()
         grader_r, node_w = os.pipe()
         env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "ROS_NAMESPACE")}
-        env["PYTHONPATH"] = str(NODELIB)
+        env["PYTHONPATH"] = NODELIB_PATH
         env["ROSGRADE_CHANNEL"] = f"{node_r},{node_w}"
         env["PYTHONHASHSEED"] = "0"   # set iteration order is part of what must be reproducible
         proc = subprocess.Popen([sys.executable, str(PROBES / self.probe), *self.args], env=env,

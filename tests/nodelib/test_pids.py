@@ -8,11 +8,13 @@ import sys
 import textwrap
 from pathlib import Path
 
-NODELIB = Path(__file__).resolve().parents[2] / "grader" / "nodelib"
+from grader.nodelib import pythonpath
+
+NODELIB_PATH = pythonpath("ros1")
 
 
 def _run(code: str) -> str:
-    env = {**os.environ, "PYTHONPATH": str(NODELIB)}
+    env = {**os.environ, "PYTHONPATH": NODELIB_PATH}
     env.pop("ROSGRADE_CHANNEL", None)  # no grader: sitecustomize leaves the process alone
     done = subprocess.run([sys.executable, "-c", textwrap.dedent(code)], env=env, capture_output=True, text=True,
                           timeout=60, check=True)

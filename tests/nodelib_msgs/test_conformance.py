@@ -10,10 +10,12 @@ from pathlib import Path
 
 import pytest
 
+from grader.nodelib import pythonpath
+
 from .probes import PROBES
 
 HERE = Path(__file__).parent
-NODELIB = HERE.parents[1] / "grader" / "nodelib"
+NODELIB_PATH = pythonpath("ros1")
 REAL_PYTHON = "/usr/bin/python3"
 # numpy 2's vectorised sin/cos and LAPACK differ from the real stack's numpy 1.x in the last bit here;
 # these probes are compared to 1e-12 instead of exactly.
@@ -45,7 +47,7 @@ def _run(python: str, pythonpath: str | None) -> list:
 
 @pytest.fixture(scope="module")
 def outputs() -> tuple[list, list]:
-    return _run(REAL_PYTHON, None), _run(sys.executable, str(NODELIB))
+    return _run(REAL_PYTHON, None), _run(sys.executable, NODELIB_PATH)
 
 
 def _floats(rendered) -> list[float]:

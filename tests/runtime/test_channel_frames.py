@@ -5,7 +5,7 @@ import json
 
 import pytest
 
-from grader.nodelib import rosgrade_channel as ch
+from grader.nodelib.common import rosgrade_channel as ch
 from grader.runtime import frames
 
 LOG = {"level": 2, "msg": "hi", "name": "/n", "file": "n.py", "function": "main", "line": 3}

@@ -7,7 +7,7 @@ import os
 
 import pytest
 
-from grader.nodelib import rosgrade_channel as ch
+from grader.nodelib.common import rosgrade_channel as ch
 from grader.recording import default_catalog
 from grader.runtime import frames
 from grader.runtime.node_link import NodeLink, ProtocolViolation, ServiceCall, ServiceReply

@@ -10,7 +10,8 @@ import rosgrade_channel as ch
 
 from . import runtime
 
-_NODELIB_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
+# nodelib/, which holds common/ and every client library's root: none of its frames are the student's.
+_NODELIB_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))) + os.sep
 
 
 def _is_student_frame(filename: str) -> bool:
