@@ -18,6 +18,7 @@ from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
 from grader.rubric import Node, Rubric, load_rubrics
 from grader.rubricfile import RubricFile, load_rubric_files, stamp
 from grader.runtime import NodeSpec, RunSpec, ScriptNotFound, check_script, find_script
+from grader.runtime.client_library import ROS1, ROS2, client_library, entry_point, package_findings
 from grader.runtime.confine import detect, package_folder
 from grader.runtime.scripts import candidates
 from grader.runtime.parallel import Outcome, Run, run_all
@@ -67,6 +68,13 @@ def _present_tasks(folder: Path, rubrics: Mapping[str, Rubric]) -> list[str]:
 
 
 def _node_spec(script: Path, node: Node) -> NodeSpec:
+    flavour = client_library(script)
+    if flavour == ROS2:
+        # rclpy reads remaps after --ros-args (`ros2 run pkg exe --ros-args -r cmd_vel:=/x`)
+        remaps = [part for name, target in node.remaps.items() for part in ("-r", f"{name}:={target}")]
+        args = (*node.args, *(("--ros-args", *remaps) if remaps else ()))
+        return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace,
+                        flavour=ROS2, entry=entry_point(script))
     args = (*node.args, *(f"{name}:={target}" for name, target in node.remaps.items()))
     return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace)
 
@@ -85,9 +93,15 @@ Started = tuple[tuple[NodeSpec, ...], list[str], list[Path]]  # node specs, find
 def _script_nodes(folder: Path, rubric: Rubric) -> Started:
     located = [_locate(folder, node, len(rubric.nodes) == 1) for node in rubric.nodes]
     findings: list[str] = []
-    for script, notes in located:
-        findings += notes + check_script(script)
     nodes = tuple(_node_spec(script, node) for (script, _), node in zip(located, rubric.nodes))
+    for (script, notes), spec in zip(located, nodes):
+        # rosrun's needs (shebang, execute bit) do not apply to `ros2 run`, which starts the entry point
+        findings += notes + check_script(script, rosrun=spec.flavour == ROS1)
+        if spec.flavour == ROS2:
+            findings += package_findings(script, spec.entry)
+    if len({spec.flavour for spec in nodes}) > 1:
+        raise ScriptNotFound("the task's nodes mix rospy and rclpy scripts; ROS 1 and ROS 2 nodes cannot talk to "
+                             "each other: write them all with one client library")
     return nodes, findings, [script for script, _ in located]
 
 

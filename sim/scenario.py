@@ -118,6 +118,10 @@ class Scenario(_Model):
     imperfections: Imperfections = Imperfections()
     script: list[ScriptedCommand] = Field(default_factory=list, description="commands sent by the scripted driver")
     obstacles: list[Obstacle] = Field(default_factory=list, description="fixed walls and pillars (empty: an open floor)")
+    command_types: list[str] | None = Field(
+        None, description="velocity command types the robot's base takes, e.g. ['geometry_msgs/Twist', "
+        "'geometry_msgs/TwistStamped']; None: what the run's client library's robot takes (ROS 1: Twist; "
+        "ROS 2 Jazzy: TwistStamped)")
 
     @model_validator(mode="after")
     def _check(self) -> Scenario:

@@ -10,7 +10,8 @@ from grader.metrics.run import RunData
 # The last line of a Python traceback: "TypeError: shutdown hook [None] must be a function ...".
 _EXCEPTION = re.compile(r"^(?:[A-Za-z_][\w]*\.)*[A-Za-z_]\w*(?:Error|Exception|Interrupt|Exit)\b(?::.*)?$")
 
-FACTS = frozenset({"path_length", "exception", "exit_code", "exit_signal", "status", "n_commands", "command_topics"})
+FACTS = frozenset({"path_length", "exception", "exit_code", "exit_signal", "status", "n_commands", "command_topics",
+                   "client_library", "ignored_command_types", "command_type"})
 
 
 def last_exception(run: RunData) -> str:
@@ -36,4 +37,7 @@ def run_facts(run: RunData) -> Measurement:
         "status": run.run.status,
         "n_commands": len(run.commands),
         "command_topics": ", ".join(sorted(set(run.commands.topic))),
+        "client_library": run.client_library,
+        "ignored_command_types": run.ignored_command_types,
+        "command_type": run.command_type,
     }

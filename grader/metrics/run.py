@@ -159,6 +159,11 @@ class RunData:
     shutdown_at: float | None = None  # scenario's Ctrl+C time, seconds after start
     poses: dict[str, Trajectory] = field(default_factory=dict)  # turtlesim: each turtle's pose topic → its poses
     service_calls: tuple[ServiceCall, ...] = ()  # in the order they were served
+    client_library: str = "rospy"  # the node's, as the recording says: "rospy" or "rclpy"
+    # Velocity command types nodes published on the robot's command topics that its base does not take
+    # (a Twist to the Jazzy TurtleBot3, which drives on TwistStamped), comma-separated.
+    ignored_command_types: str = ""
+    command_type: str = "Twist"  # what the robot's base takes, as feedback names it ("Twist or TwistStamped")
 
     def trajectory(self, source: Literal["ground_truth", "odometry"]) -> Trajectory:
         """The requested path; ground truth falls back to odometry when the recording has none."""
@@ -191,7 +196,36 @@ class RunData:
             shutdown_at=shutdown_at,
             poses=turtle_poses(recording),
             service_calls=service_calls(recording),
+            client_library=_client_library(recording),
+            ignored_command_types=_ignored_command_types(recording),
+            command_type=_command_type(recording),
         )
+
+
+def _world_info(recording: Any) -> dict:
+    info = _decode((getattr(recording, "metadata", None) or {}).get("rosgrade") or {})
+    return info if isinstance(info, dict) else {}
+
+
+def _client_library(recording: Any) -> str:
+    return "rclpy" if _world_info(recording).get("client_library") == "rclpy" else "rospy"
+
+
+def _command_type(recording: Any) -> str:
+    taken = _decode(_world_info(recording).get("command_types"))
+    names = sorted({t.rsplit("/", 1)[-1] for t in taken if isinstance(t, str)}) if isinstance(taken, list) else []
+    return " or ".join(names) or "Twist"
+
+
+def _ignored_command_types(recording: Any) -> str:
+    """Types nodes published on command topics that the base does not take (from the recording's declarations)."""
+    info = _world_info(recording)
+    topics, taken = _decode(info.get("command_topics")), _decode(info.get("command_types"))
+    if not isinstance(topics, list) or not isinstance(taken, list) or not hasattr(recording, "topics"):
+        return ""
+    taken_short = {t.replace("/msg/", "/") for t in taken if isinstance(t, str)}
+    sent = {t.type for t in recording.topics() if t.topic in topics and t.origin == "node" and t.count}
+    return ", ".join(sorted(t for t in sent if t not in taken_short))
 
 
 def _decode(value: Any) -> Any:

@@ -69,6 +69,15 @@ def _catalog_typestore() -> Typestore:
 class MessageCatalog:
     """Definitions, md5sums and validating decoders for the ROS 1 message types rosgrade handles."""
 
+    profile = "ros1"
+    schema_encoding = "ros1msg"
+    message_encoding = "ros1"
+
+    @staticmethod
+    def canonical(type_name: str) -> str:
+        """The spelling this catalog records and compares: ``pkg/Name``."""
+        return ros1_type_name(type_name)
+
     def __init__(self) -> None:
         self._store = _catalog_typestore()
         self._msgdefs: dict[str, tuple[str, str]] = {}
@@ -136,6 +145,11 @@ class MessageCatalog:
             return bytes(self._store.serialize_ros1(message, store_type))
         except Exception as exc:  # noqa: BLE001 - rosbags raises assorted errors for a wrong object
             raise RecordingError(f"cannot serialize {type(message).__name__} as {type_name}: {exc}") from None
+
+    @staticmethod
+    def service_part(service_name: str, part: str) -> str:
+        """The message type of a service's ``part`` ("Request" or "Response"): ``pkg/NameRequest``."""
+        return ros1_type_name(service_name) + part
 
     @staticmethod
     def known_service(service_name: str) -> bool:

@@ -28,10 +28,15 @@ DEFAULT_ODOMETRY_TOPIC = "/odom"
 SIM_CALLERID = "/gazebo"
 OUTPUT_TOPICS = {"/rosgrade/stdout": "stdout", "/rosgrade/stderr": "stderr", "/rosout": "rosout"}
 LOG = "rosgraph_msgs/Log"
-OUTPUT_TYPES = ("std_msgs/String", LOG)
+LOG2 = "rcl_interfaces/Log"  # ROS 2's /rosout
+OUTPUT_TYPES = ("std_msgs/String", LOG, LOG2)
+# ROS 2 severities on the ROS 1 scale that log metrics use (1 DEBUG, 2 INFO, 4 WARN, 8 ERROR, 16 FATAL).
+_ROS1_LEVEL = {10: 1, 20: 2, 30: 4, 40: 8, 50: 16}
 TF_TOPICS = ("/tf", "/tf_static")
 ODOMETRY = "nav_msgs/Odometry"
 TWIST = "geometry_msgs/Twist"
+TWIST_STAMPED = "geometry_msgs/TwistStamped"  # ROS 2 Jazzy's velocity command
+COMMAND_TYPES = (TWIST, TWIST_STAMPED)
 
 Vec3 = tuple[float, float, float]
 # One decoded pose/twist row: stamp ns, x y z qx qy qz qw, linear, angular.
@@ -203,16 +208,16 @@ class Recording:
     # -- commands, transforms, output -------------------------------------------------------------------------
 
     def command_topics(self) -> list[str]:
-        """Topics carrying velocity commands: named in the metadata, else every geometry_msgs/Twist topic."""
+        """Topics carrying velocity commands: named in the metadata, else every Twist or TwistStamped topic."""
         named = self.metadata.get("rosgrade", {}).get("command_topics")
         if isinstance(named, list) and all(isinstance(t, str) for t in named):
             return list(named)
-        return sorted({c.topic for c in self._channels(type_name=TWIST)})
+        return sorted({c.topic for c in self._channels() if c.type in COMMAND_TYPES})
 
     def commands(self, topic: str | None = None) -> CommandSeries:
-        """Every geometry_msgs/Twist on the command topics (or ``topic``) with who sent it, at record time."""
+        """Every Twist (or TwistStamped) on the command topics (or ``topic``) with who sent it, at record time."""
         topics = {topic} if topic else set(self.command_topics())
-        channels = [c for c in self._channels(type_name=TWIST) if c.topic in topics]
+        channels = [c for c in self._channels() if c.type in COMMAND_TYPES and c.topic in topics]
         t_ns: list[int] = []
         values: list[tuple[Vec3, Vec3]] = []
         topic_names: list[str] = []
@@ -235,6 +240,8 @@ class Recording:
 
     def _generic_twist(self, data: bytes, channel: ChannelInfo) -> tuple[Vec3, Vec3]:
         msg: Any = self._source.deserialize(data, channel)
+        if channel.type == TWIST_STAMPED:
+            msg = msg.twist
         return (msg.linear.x, msg.linear.y, msg.linear.z), (msg.angular.x, msg.angular.y, msg.angular.z)
 
     def transforms(self, topic: str | None = None) -> TransformSeries:
@@ -266,7 +273,7 @@ class Recording:
         lines = []
         for channel, t_ns, data in self._raw(channels):
             msg: Any = self._source.deserialize(data, channel)
-            text = msg.msg if channel.type == LOG else msg.data
+            text = msg.msg if channel.type in (LOG, LOG2) else msg.data
             lines.append(OutputLine(t_ns / 1e9, OUTPUT_TOPICS[channel.topic], text))
         return lines
 
@@ -275,5 +282,8 @@ class Recording:
         lines = []
         for t_ns, msg in self.messages("/rosout"):
             m: Any = msg
-            lines.append(LogLine(t_ns / 1e9, int(m.level), m.name, m.msg, m.file, m.function, int(m.line)))
+            level = int(m.level)
+            if self._source.encoding == "cdr":
+                level = _ROS1_LEVEL.get(level, level)
+            lines.append(LogLine(t_ns / 1e9, level, m.name, m.msg, m.file, m.function, int(m.line)))
         return lines

@@ -1,8 +1,8 @@
-"""Container readers: our ROS 1 MCAP, ROS 1 bags and ROS 2 bags, loaded into one in-memory shape.
+"""Container readers: MCAP (ROS 1 or ROS 2), ROS 1 bags and ROS 2 bags, loaded into one in-memory shape.
 
-rosbags' MCAP reader rejects profile ``ros1``, so our files are read with mcap's streaming reader (which also gets
-the readable part of a truncated file) and decoded with a type store built from the file's own schemas.
-Everything else goes through rosbags' AnyReader.
+rosbags' MCAP reader rejects profile ``ros1`` and drops channel metadata (who published), so MCAP files are read
+with mcap's streaming reader (which also gets the readable part of a truncated file) and decoded with a type store
+built from the file's own schemas. Bags go through rosbags' AnyReader.
 """
 from __future__ import annotations
 
@@ -47,7 +47,7 @@ class ChannelInfo:
 class Source:
     """A whole recording in memory: channels, messages in log-time order, metadata, and how to decode payloads."""
 
-    format: str  # 'mcap-ros1' | 'rosbag1' | 'rosbag2'
+    format: str  # "mcap-ros1" | "mcap-ros2" | "rosbag1" | "rosbag2"
     encoding: str  # payload encoding: 'ros1' | 'cdr'
     typestore: Typestore
     channels: dict[int, ChannelInfo] = field(default_factory=dict)
@@ -96,8 +96,9 @@ def _load(path: Path) -> Source:
     if not head:
         raise _unreadable(path, "the file is empty")
     if head.startswith(MCAP_MAGIC):
-        if _mcap_profile(head) in ("ros1", None):  # None: too damaged to tell; our reader says how
-            return _load_mcap_ros1(path)
+        profile = _mcap_profile(head)
+        if profile in _MCAP_FLAVOURS or profile is None:  # None: too damaged to tell; our reader says how
+            return _load_mcap(path, profile or "ros1")
         return _load_anyreader(path, "rosbag2", suffix=".mcap")
     if head.startswith(BAG_MAGIC):
         return _load_anyreader(path, "rosbag1", suffix=".bag")
@@ -117,7 +118,11 @@ def _mcap_profile(head: bytes) -> str | None:
         return None
 
 
-def _load_mcap_ros1(path: Path) -> Source:
+# MCAP profile -> (schema encoding, message encoding, Source.encoding, ROS version of the definitions).
+_MCAP_FLAVOURS = {"ros1": ("ros1msg", "ros1", "ros1", 1), "ros2": ("ros2msg", "cdr", "cdr", 2)}
+
+
+def _load_mcap(path: Path, profile: str) -> Source:
     """Read every record; on damage keep what came before and say where it stopped."""
     schemas: dict[int, Schema] = {}
     raw_channels: dict[int, McapChannel] = {}
@@ -151,15 +156,15 @@ def _load_mcap_ros1(path: Path) -> Source:
         if not messages:
             raise _unreadable(path, f"{truncated}, before any complete message")
         truncated = f"{truncated}; {len(messages)} messages before that were read"
-    source = Source("mcap-ros1", "ros1", _typestore_from_schemas(path, schemas), metadata=metadata, truncated=truncated)
+    schema_encoding, message_encoding, encoding, version = _MCAP_FLAVOURS[profile]
+    source = Source(f"mcap-{profile}", encoding, _typestore_from_schemas(path, schemas, schema_encoding),
+                    metadata=metadata, truncated=truncated)
     for channel in raw_channels.values():
         schema = schemas.get(channel.schema_id)
-        if schema is None or schema.encoding != "ros1msg" or channel.message_encoding != "ros1":
+        if schema is None or schema.encoding != schema_encoding or channel.message_encoding != message_encoding:
             continue  # nothing to decode it with
-        type_name = ros1_type_name(schema.name)
-        package, name = type_name.split("/")
-        store_type = f"{package}/msg/{name}"
-        md5sum = source.typestore.generate_msgdef(store_type, ros_version=1)[1]
+        type_name, store_type = _names(schema.name)
+        md5sum = source.typestore.generate_msgdef(store_type, ros_version=1)[1] if version == 1 else ""
         source.channels[channel.id] = ChannelInfo(
             channel.id,
             channel.topic,
@@ -172,6 +177,17 @@ def _load_mcap_ros1(path: Path) -> Source:
         )
     source.messages = sorted((m for m in messages if m[0] in source.channels), key=lambda m: m[1])
     return source
+
+
+def _names(schema_name: str) -> tuple[str, str]:
+    """(the type as the reader spells it, the type store's name) of a schema: ``pkg/Name`` and ``pkg/msg/Name`` for
+    a message; a ROS 2 service part (``pkg/srv/Name_Request``) keeps its name, filed under ``pkg/srv/msg/``."""
+    parts = schema_name.split("/")
+    if len(parts) == 3 and parts[1] == "srv":
+        return schema_name, f"{parts[0]}/srv/msg/{parts[2]}"
+    type_name = ros1_type_name(schema_name)
+    package, name = type_name.split("/")
+    return type_name, f"{package}/msg/{name}"
 
 
 def _ros1_spelling(msgtype: str) -> str:
@@ -189,14 +205,14 @@ def _mcap_damage(exc: BaseException) -> str:
     return f"damaged ({_describe(exc)})"
 
 
-def _typestore_from_schemas(path: Path, schemas: dict[int, Schema]) -> Typestore:
-    """A type store holding exactly the definitions the file carries."""
+def _typestore_from_schemas(path: Path, schemas: dict[int, Schema], encoding: str) -> Typestore:
+    """A type store holding exactly the definitions the file carries (``encoding``: ros1msg or ros2msg)."""
     store = get_typestore(Stores.EMPTY)
     types = {}
     try:
         for schema in schemas.values():
-            if schema.encoding == "ros1msg":
-                types.update(get_types_from_msg(schema.data.decode(), ros1_type_name(schema.name)))
+            if schema.encoding == encoding:
+                types.update(get_types_from_msg(schema.data.decode(), _names(schema.name)[0]))
         store.register(types)
     except Exception as exc:  # noqa: BLE001 - the schema text is file content, not code
         raise _unreadable(path, f"bad message definition ({_describe(exc)})") from None

@@ -1,4 +1,4 @@
-"""The run recorder: one deterministic ROS 1 MCAP per run (same inputs give a byte-identical file)."""
+"""The run recorder: one deterministic MCAP per run, ROS 1 or ROS 2 after its catalog (same inputs, same bytes)."""
 from __future__ import annotations
 
 import json
@@ -12,7 +12,8 @@ from mcap.writer import CompressionType, Writer
 
 from grader import __version__
 from grader.recording.errors import RecordingError
-from grader.recording.messages import MessageCatalog, default_catalog, ros1_type_name
+from grader.recording.messages import MessageCatalog, default_catalog
+from grader.recording.ros2_messages import Ros2Catalog
 
 # Metadata record the recorder adds when the size cap dropped messages.
 CAP_METADATA = "rosgrade.recording"
@@ -43,8 +44,21 @@ def metadata_strings(name: str, values: Mapping[str, object]) -> dict[str, str]:
     return out
 
 
+def _qos_yaml(transient_local: bool) -> str:
+    """rosbag2's ``offered_qos_profiles`` text (rmw enum values, which every rosbag2 reads) for one reliable
+    keep-last publisher; a transient-local one is ROS 2's latching."""
+    return ("- history: 1\n  depth: 10\n  reliability: 1\n"
+            f"  durability: {1 if transient_local else 2}\n"
+            "  deadline:\n    sec: 0\n    nsec: 0\n  lifespan:\n    sec: 0\n    nsec: 0\n"
+            "  liveliness: 1\n  liveliness_lease_duration:\n    sec: 0\n    nsec: 0\n"
+            "  avoid_ros_namespace_conventions: false\n")
+
+
 class Recorder:
-    """Writes messages to a ROS 1 MCAP: one schema per type, one channel per (topic, callerid, origin), sim-time stamps.
+    """Writes messages to an MCAP: one schema per type, one channel per (topic, callerid, origin), sim-time stamps.
+
+    The catalog decides the flavour: ROS 1 (``ros1msg`` schemas, ``ros1`` payloads) or ROS 2 (``ros2msg``, ``cdr``,
+    as rosbag2 writes them, so ``ros2 bag`` and Foxglove open the file).
 
     ``max_bytes`` caps the total payload; messages beyond it are dropped, counted and noted in the
     ``rosgrade.recording`` metadata record, so a flooding node cannot fill the disk.
@@ -57,7 +71,7 @@ class Recorder:
         *,
         max_bytes: int | None = None,
         chunk_size: int = 1 << 20,
-        catalog: MessageCatalog | None = None,
+        catalog: MessageCatalog | Ros2Catalog | None = None,
     ) -> None:
         self._path = Path(path)
         self._initial_metadata = {name: metadata_strings(name, values) for name, values in (metadata or {}).items()}
@@ -91,7 +105,7 @@ class Recorder:
         except OSError as exc:
             raise RecordingError(f"cannot create recording {self._path}: {exc.strerror or exc}") from None
         self._writer = Writer(self._file, chunk_size=self._chunk_size, compression=CompressionType.ZSTD)
-        self._writer.start(profile="ros1", library=f"rosgrade {__version__}")
+        self._writer.start(profile=self._catalog.profile, library=f"rosgrade {__version__}")
         for name, values in self._initial_metadata.items():
             self._writer.add_metadata(name, values)
 
@@ -132,7 +146,7 @@ class Recorder:
         channel = self._channels.get(key)
         if channel is None:
             channel = self._channels[key] = self._register(writer, topic, type_name, callerid, latching, origin)
-        elif channel.type_name != type_name and ros1_type_name(type_name) != channel.type_name:
+        elif channel.type_name != type_name and self._catalog.canonical(type_name) != channel.type_name:
             raise RecordingError(f"{callerid} wrote {type_name} on {topic}, which it recorded as {channel.type_name}")
         channel.sequence += 1
         writer.add_message(
@@ -146,19 +160,24 @@ class Recorder:
                   origin: str | None) -> _Channel:
         if not topic.startswith("/"):
             raise RecordingError(f"topic {topic!r} is not a global name")
-        name = ros1_type_name(type_name)
+        catalog = self._catalog
+        name = catalog.canonical(type_name)
         schema_id = self._schemas.get(name)
         if schema_id is None:
-            definition = self._catalog.definition(name)
+            definition = catalog.definition(name)
             schema_id = self._schemas[name] = writer.register_schema(
-                name=name, encoding="ros1msg", data=definition.encode()
+                name=name, encoding=catalog.schema_encoding, data=definition.encode()
             )
-        metadata = {"callerid": callerid, "md5sum": self._catalog.md5sum(name),
-                    "latching": "1" if latching else "0"}  # the ROS 1 connection-header value, as bags keep it
+        if catalog.profile == "ros1":
+            metadata = {"callerid": callerid, "md5sum": catalog.md5sum(name),
+                        "latching": "1" if latching else "0"}  # the ROS 1 connection-header value, as bags keep it
+        else:
+            metadata = {"callerid": callerid, "offered_qos_profiles": _qos_yaml(latching),
+                        "type_hash": catalog.md5sum(name)}
         if origin is not None:
             metadata["origin"] = origin
-        channel_id = writer.register_channel(topic=topic, message_encoding="ros1", schema_id=schema_id,
-                                             metadata=metadata)
+        channel_id = writer.register_channel(topic=topic, message_encoding=catalog.message_encoding,
+                                             schema_id=schema_id, metadata=metadata)
         return _Channel(channel_id, name)
 
     def add_metadata(self, name: str, values: Mapping[str, object]) -> None:

@@ -35,23 +35,25 @@ def diagnose(session: Session) -> list[str]:
     """Findings for every node of a finished session, most useful first."""
     world = session.world
     command_topics = tuple(world.command_topics)
-    world_topics = {p.topic: p.type for p in world.publications if p.to_nodes}
+    world_topics = {p.topic: p.type for p in session.publications.values() if p.to_nodes}
+    init_call = "rclpy.init() and create a Node" if session.wire.name == "ros2" else "rospy.init_node()"
     robot_received = sum(session.received.values())
     notes: list[str] = []
     for node in session.nodes:
         state = node.link.state
         label = node.outcome.script
         if state.name is None:
-            notes.append(f"{label} never called rospy.init_node(): a ROS node must call it before it can publish, "
+            notes.append(f"{label} never called {init_call}: a ROS node must do so before it can publish, "
                          "subscribe or read the time.")
         notes += _capped(_endpoint_notes(session, node, command_topics, world_topics, robot_received),
                          f"findings about {label}'s publishers and subscribers")
         if state.exception:
             exc = state.exception
             notes.append(f"{label} stopped with an uncaught {exc.get('type')}{_location(exc)}: {exc.get('message')}")
+        library = "rclpy" if session.wire.name == "ros2" else "rospy"
         for exc in state.caught:
             notes.append(f"{label} raised {exc.get('type')} in a {exc['where']}{_location(exc)}: {exc.get('message')} "
-                         "(rospy printed the traceback and carried on)")
+                         f"({library} printed the traceback and carried on)")
         if state.output_truncated:
             notes.append(f"{label} printed more than the output limit; the rest was discarded.")
         if node.outcome.status != "exited" or state.name is None:
@@ -66,10 +68,10 @@ def _endpoint_notes(session: Session, node: _Node, command_topics: tuple[str, ..
     state, label = node.link.state, node.outcome.script
     notes: list[str] = []
     for pub in state.publishers.values():
-        if pub.topic in command_topics and pub.type != "geometry_msgs/Twist":
-            notes.append(f"{pub.topic} carries geometry_msgs/Twist, but {label} published {pub.type} there: "
-                         "the robot ignores it.")
-        elif (pub.type == "geometry_msgs/Twist" and pub.topic not in command_topics and pub.count
+        if pub.topic in command_topics and pub.type not in session.command_types:
+            notes.append(f"{pub.topic} carries {' or '.join(sorted(session.command_types))} on this robot, but "
+                         f"{label} published {pub.type} there: the robot ignores it.")
+        elif (pub.type in session.command_types and pub.topic not in command_topics and pub.count
               and robot_received == 0):
             notes.append(f"Your node published {_count(pub.count, 'message')} on {pub.topic}; this robot "
                          f"listens on {' or '.join(command_topics)}.")

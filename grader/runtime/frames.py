@@ -20,6 +20,8 @@ Name = Annotated[str, Field(max_length=ch.MAX_NAME_CHARS)]
 Label = Annotated[str, Field(max_length=ch.MAX_LABEL_CHARS)]
 FilePath = Annotated[str, Field(max_length=ch.MAX_PATH_CHARS)]
 Message = Annotated[str, Field(max_length=ch.MAX_MESSAGE_CHARS)]
+# A ROS 1 md5sum, a ROS 2 (Jazzy) RIHS01 type hash, or "*" (rospy's any-type wildcard).
+TypeHash = Annotated[str, Field(pattern=r"^[0-9a-f]{32}$|^RIHS01_[0-9a-f]{64}$|^\*$")]
 
 
 class FrameError(Exception):
@@ -50,7 +52,7 @@ class Register(_Frame):
     id: Handle
     topic: Name
     type: Name
-    md5sum: Annotated[str, Field(pattern=r"^[0-9a-f]{32}$|^\*$")]
+    md5sum: TypeHash
     queue_size: LaxInt
     latch: bool
 
@@ -92,7 +94,7 @@ class Call(_Frame):
 
     service: Name
     type: Name  # "*" with md5sum "*" in a probe, which names no srv type
-    md5sum: Annotated[str, Field(pattern=r"^[0-9a-f]{32}$|^\*$")]
+    md5sum: TypeHash
     probe: bool
 
 

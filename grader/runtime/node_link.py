@@ -279,7 +279,8 @@ class NodeLink:
         if frame.id not in table and len(st.publishers) + len(st.subscribers) >= MAX_ENDPOINTS:
             raise EndpointLimitExceeded(f"registered more than {MAX_ENDPOINTS} publishers and subscribers; "
                                         "it was stopped")
-        endpoint = Endpoint(ident=frame.id, topic=_topic(frame.topic), type=frame.type, md5sum=frame.md5sum,
+        endpoint = Endpoint(ident=frame.id, topic=_topic(frame.topic), type=self._catalog.canonical(frame.type),
+                            md5sum=frame.md5sum,
                             queue_size=frame.queue_size, latch=frame.latch, registered_ns=t_ns)
         table[endpoint.ident] = endpoint
         return endpoint if kind == ch.SUBSCRIBE else None
@@ -295,7 +296,7 @@ class NodeLink:
                 raise ProtocolViolation(f"CALL probe of {service} carries {len(request)} request bytes")
         elif known:
             try:
-                self._catalog.decode(frame.type + "Request", request)
+                self._catalog.decode(self._catalog.service_part(frame.type, "Request"), request)
             except RecordingError as exc:
                 raise ProtocolViolation(f"request to {service} is not a valid {frame.type} request: {exc}") from None
         return ServiceCall(service, frame.type, frame.md5sum, frame.probe, request)

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from grader.runtime import confine
-from grader.nodelib import pythonpath
+from grader.nodelib import COMMON, pythonpath
 from grader.runtime.spec import Limits, NodeSpec
 
 try:
@@ -24,6 +24,7 @@ except ImportError:  # Windows: no rlimits; the grader's own watchdogs still app
 # can be found through /proc even when they left the node's process group. Its value starts with the grader's pid
 # (see marker_prefix), so one grader's leftovers are told apart from those of other graders on the same machine.
 MARKER_ENV = "ROSGRADE_NODE_MARKER"
+ENTRY_LAUNCHER = COMMON / "rosgrade_entry.py"
 
 # Nothing of the grader's environment leaks into the node except what a terminal on a ROS machine would give it;
 # ROS_* and PYTHONPATH are dropped so a real ROS install on this machine is never picked up.
@@ -63,6 +64,14 @@ def node_environment(spec: NodeSpec, channel: str, home: Path | str) -> dict[str
     if spec.ros_namespace:
         env["ROS_NAMESPACE"] = spec.ros_namespace
     return env
+
+
+def _start_command(spec: NodeSpec, script: Path) -> list[str]:
+    """What follows ``python3 -B``: the script, or for an ament_python node the entry-point launcher, as `ros2 run`."""
+    entry = spec.entry
+    if entry is None:
+        return [str(script)]
+    return [str(ENTRY_LAUNCHER), str(entry.root), f"{entry.module}:{entry.function}", entry.executable]
 
 
 def _own_process_count() -> int:
@@ -131,7 +140,8 @@ class NodeProcess:
         workdir.mkdir(parents=True, exist_ok=True)
         script = Path(os.path.abspath(spec.script))
         try:
-            self.plan = confine.plan(["-B", str(script), *spec.args], script, workdir, limits.file_mb)
+            self.plan = confine.plan(["-B", *_start_command(spec, script), *spec.args], script, workdir,
+                                     limits.file_mb)
         except confine.ConfineError as exc:
             raise ProcessError(str(exc)) from None
         except OSError as exc:

@@ -65,27 +65,13 @@ def read_script(path: Path) -> bytes | str:
     return raw
 
 
-def check_script(path: Path) -> list[str]:
-    """What `rosrun pkg script.py` on a ROS machine would trip over, each with the fix."""
-    notes: list[str] = []
+def check_script(path: Path, rosrun: bool = True) -> list[str]:
+    """What `rosrun pkg script.py` on a ROS machine would trip over, each with the fix; with ``rosrun`` False
+    (a ROS 2 node, started by `ros2 run` or `python3`) only what would stop Python itself."""
     raw = read_script(path)
     if isinstance(raw, str):
         return [raw]
-    first_line = raw.split(b"\n", 1)[0]
-    if not first_line.startswith(b"#!"):
-        notes.append(f"{path.name} has no shebang line: rosrun would fail with 'Exec format error'. "
-                     "Make `#!/usr/bin/env python3` the very first line.")
-    else:
-        if first_line.endswith(b"\r"):
-            notes.append(f"{path.name} has Windows (CRLF) line endings: rosrun would fail with "
-                         "\"/usr/bin/env: 'python3\\r': No such file or directory\". Save it with LF line endings.")
-        interpreter = first_line[2:].strip().split()
-        if interpreter and interpreter[-1] == b"python":
-            notes.append(f"{path.name} asks for `python` in its shebang; ROS Noetic needs `#!/usr/bin/env python3` "
-                         "(plain `python` is missing or Python 2 on most lab machines).")
-    if not path.stat().st_mode & (stat.S_IXUSR | stat.S_IXGRP | stat.S_IXOTH):
-        notes.append(f"{path.name} is not executable: rosrun would say it can't find an executable named "
-                     f"{path.name}. Run `chmod +x {path.name}`.")
+    notes = _rosrun_notes(path, raw) if rosrun else []
     try:
         source = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
@@ -104,6 +90,27 @@ def check_script(path: Path) -> list[str]:
         notes.append(f"{path.name} line {exc.lineno}: SyntaxError: {exc.msg}.{hint}")
     except (ValueError, RecursionError, MemoryError) as exc:  # e.g. nesting too deep for the compiler
         notes.append(f"{path.name} cannot be compiled by Python ({type(exc).__name__}); simplify the code.")
+    return notes
+
+
+def _rosrun_notes(path: Path, raw: bytes) -> list[str]:
+    """rosrun executes the file itself: it needs a python3 shebang, LF line endings and the execute bit."""
+    notes: list[str] = []
+    first_line = raw.split(b"\n", 1)[0]
+    if not first_line.startswith(b"#!"):
+        notes.append(f"{path.name} has no shebang line: rosrun would fail with 'Exec format error'. "
+                     "Make `#!/usr/bin/env python3` the very first line.")
+    else:
+        if first_line.endswith(b"\r"):
+            notes.append(f"{path.name} has Windows (CRLF) line endings: rosrun would fail with "
+                         "\"/usr/bin/env: 'python3\\r': No such file or directory\". Save it with LF line endings.")
+        interpreter = first_line[2:].strip().split()
+        if interpreter and interpreter[-1] == b"python":
+            notes.append(f"{path.name} asks for `python` in its shebang; ROS Noetic needs `#!/usr/bin/env python3` "
+                         "(plain `python` is missing or Python 2 on most lab machines).")
+    if not path.stat().st_mode & (stat.S_IXUSR | stat.S_IXGRP | stat.S_IXOTH):
+        notes.append(f"{path.name} is not executable: rosrun would say it can't find an executable named "
+                     f"{path.name}. Run `chmod +x {path.name}`.")
     return notes
 
 

@@ -11,6 +11,7 @@ import shutil
 import signal
 import tempfile
 import time
+import dataclasses
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import TextIO
@@ -19,7 +20,7 @@ import mujoco
 
 from grader import __version__, timing
 from grader.nodelib.common import rosgrade_channel as ch
-from grader.recording import Recorder, default_catalog, decode_twist, log_bytes, string_bytes, twist_bytes
+from grader.recording import Recorder
 from grader.runtime import confine
 from grader.runtime.diagnostics import diagnose, topic_summary
 from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
@@ -28,7 +29,7 @@ from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, 
 from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
-from grader.runtime import world_codec
+from grader.runtime.wire import wire_for
 from sim import WORLD_NODE_NAMES, CommandSample, TurtlesimWorld, World, WorldService, WorldTopic, open_world
 
 # Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
@@ -47,7 +48,6 @@ SERVICE_PREFIX = "/rosgrade/service"
 DRIVER_CALLERID = "/rosgrade_driver"
 # Names of the grader's own nodes (each world's node and real ROS's /rosout): a student node may not take them.
 RESERVED_NAMES = frozenset({*WORLD_NODE_NAMES, DRIVER_CALLERID, "/rosout"})
-TWIST = "geometry_msgs/Twist"
 # Wall seconds the runtime waits for a process to go once its channel has closed, before killing it.
 EXIT_WAIT_WALL_S = 5.0
 WORKROOT_PREFIX = "rosgrade-node-"
@@ -95,7 +95,12 @@ class Session:
         self.spec = spec
         self.recording_path = recording
         self.log_path = log
-        self.catalog = default_catalog()
+        # One wire flavour per run: the client library of its nodes (rospy: ROS 1, rclpy: ROS 2).
+        self.wire = wire_for(spec.flavour)
+        self.catalog = self.wire.catalog
+        # The velocity command types the robot's base takes (the scenario's choice, else the flavour's robot).
+        self.command_types = frozenset(self.wire.canonical(t) for t in spec.scenario.command_types) \
+            if spec.scenario.command_types else frozenset(self.wire.default_command_types)
         self.world: World | TurtlesimWorld | None = None  # built after the node processes start, while they import
         self.start_ns = spec.scenario.start_ns
         self.end_ns = spec.scenario.end_ns
@@ -135,7 +140,8 @@ class Session:
             for node in self.nodes:
                 node.process.close()
             raise
-        with Recorder(self.recording_path, metadata={"rosgrade": self._world_metadata()}) as rec, \
+        with Recorder(self.recording_path, metadata={"rosgrade": self._world_metadata()},
+                      catalog=self.catalog) as rec, \
                 open(self.log_path, "w", encoding="utf-8") as log_file:
             self._recorder, self._log_file = rec, log_file
             try:
@@ -338,10 +344,10 @@ class Session:
                 raise OutputLimitExceeded(f"printed more than its output limit of {self.spec.limits.output_bytes} "
                                           "bytes; it was stopped")
         elif isinstance(event, LogLine):
-            self._recorder.write("/rosout", "rosgraph_msgs/Log",
-                                 log_bytes(t, self._next_seq("/rosout"), event.level, node.callerid, event.msg,
-                                           event.file, event.function, event.line,
-                                           sorted({e.topic for e in node.link.state.publishers.values()})),
+            self._recorder.write("/rosout", self.wire.log_type,
+                                 self.wire.log(t, self._next_seq("/rosout"), event.level, node.callerid, event.msg,
+                                               event.file, event.function, event.line,
+                                               sorted({e.topic for e in node.link.state.publishers.values()})),
                                  t, callerid=node.callerid, origin="node")
         return None
 
@@ -367,9 +373,10 @@ class Session:
     def _serve(self, node: _Node, served: WorldService, request: bytes, t: int) -> ServiceReply:
         """Hand a request to the world now: what it logs, its answer and the topics it adds or removes (a spawned or
         killed turtle) take effect at once."""
-        self._recorder.write(f"{SERVICE_PREFIX}{served.name}/request", served.type + "Request", request, t,
+        self._recorder.write(f"{SERVICE_PREFIX}{served.name}/request", self.wire.service_part(served.type, "Request"),
+                             request, t,
                              callerid=node.callerid, origin="node")
-        result = self.world.call(served.name, world_codec.request_values(self.catalog, served.type, request))
+        result = self.world.call(served.name, self.wire.request_values(served.type, request))
         for sample in result.samples:
             self._world_sample(sample)
         self._take_declarations()
@@ -377,21 +384,23 @@ class Session:
             reply = ServiceReply(ch.SERVICE_FAILED, result.error)
             self._record_failure(served.name, reply, t)
             return reply
-        data = world_codec.response_bytes(self.catalog, served.type, result.response)
-        self._recorder.write(f"{SERVICE_PREFIX}{served.name}/response", served.type + "Response", data, t,
+        data = self.wire.response_bytes(served.type, result.response)
+        self._recorder.write(f"{SERVICE_PREFIX}{served.name}/response", self.wire.service_part(served.type, "Response"),
+                             data, t,
                              callerid=self.world.node_name, origin="world")
         return ServiceReply(ch.SERVICE_OK, response=data)
 
     def _record_failure(self, service: str, reply: ServiceReply, t: int) -> None:
         """Why a call failed, as ``status`` or ``status: the server's text`` (std_msgs/String)."""
         text = f"{reply.status}: {reply.error}" if reply.error else reply.status
-        self._recorder.write(f"{SERVICE_PREFIX}{service}/error", "std_msgs/String", string_bytes(text), t,
+        self._recorder.write(f"{SERVICE_PREFIX}{service}/error", self.wire.string_type, self.wire.string(text), t,
                              callerid=self.world.node_name, origin="world")
 
     def _take_declarations(self) -> None:
         """What the world publishes now: at the start, and again after a service call (spawn and kill change it)."""
-        self.publications = {p.topic: p for p in self.world.publications}
-        self.world_topics = {(p.topic, p.type) for p in self.world.publications if p.to_nodes}
+        canonical = self.wire.canonical
+        self.publications = {p.topic: dataclasses.replace(p, type=canonical(p.type)) for p in self.world.publications}
+        self.world_topics = {(p.topic, p.type) for p in self.publications.values() if p.to_nodes}
 
     # -- connections (as a ROS 1 master and TCPROS would make them) -------------------------------------------
     @staticmethod
@@ -405,7 +414,7 @@ class Session:
         if t < self._ready_ns(publisher):
             return []
         found: list = []
-        if publisher.topic in self.world.command_topics and publisher.type == TWIST:
+        if publisher.topic in self.world.command_topics and publisher.type in self.command_types:
             found.append(ROBOT)
         for index, other in enumerate(self.nodes):
             if other.alive:
@@ -447,7 +456,7 @@ class Session:
 
     def _hand_over(self, key, publisher: Endpoint, data: bytes) -> None:
         if key == ROBOT:
-            linear, angular = decode_twist(data)
+            linear, angular = self.wire.decode_command(publisher.type, data)
             self.world.command(publisher.topic, linear=linear, angular=angular)
             self.received[publisher.topic] = self.received.get(publisher.topic, 0) + 1
         else:
@@ -513,7 +522,7 @@ class Session:
 
     def _output(self, node: _Node, line: OutputLine, t: int) -> None:
         topic = "/rosgrade/stdout" if line.stream == 1 else "/rosgrade/stderr"
-        self._recorder.write(topic, "std_msgs/String", string_bytes(line.text), t, callerid=node.callerid,
+        self._recorder.write(topic, self.wire.string_type, self.wire.string(line.text), t, callerid=node.callerid,
                              origin="node")
         self._text_log(node).write(f"[{t / 1e9:12.6f}] {'out' if line.stream == 1 else 'err'} | {line.text}\n")
 
@@ -536,11 +545,12 @@ class Session:
     def _world_sample(self, sample: object) -> None:
         """Record one thing the world did; deliver it to subscribers when its topic is declared for nodes."""
         if isinstance(sample, CommandSample):  # the scripted driver's command: recorded as the grader's
-            self._recorder.write(sample.topic, TWIST, twist_bytes(sample.linear, sample.angular), sample.t_ns,
+            self._recorder.write(sample.topic, self.wire.twist_type, self.wire.twist(sample.linear, sample.angular),
+                                 sample.t_ns,
                                  callerid=DRIVER_CALLERID, origin="grader")
             return
         publication = self.publications[sample.topic]
-        data = world_codec.encode(sample, self._next_seq(sample.topic))
+        data = self.wire.encode(sample, self._next_seq(sample.topic))
         self._recorder.write(sample.topic, publication.type, data, sample.t_ns, callerid=self.world.node_name,
                              origin="world")
         if publication.to_nodes:
@@ -567,6 +577,8 @@ class Session:
             "base_mode": self.world.mode_name,
             "odometry_topic": self.world.odometry_topic,
             "command_topics": json.dumps(list(self.world.command_topics)),
+            "command_types": json.dumps(sorted(self.command_types)),
+            "client_library": "rclpy" if self.wire.name == "ros2" else "rospy",
             "scenario_name": self.spec.name,
             "scenario": scenario.model_dump_json(),
         }

@@ -6,6 +6,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Literal
 
 if TYPE_CHECKING:
+    from grader.runtime.client_library import EntryPoint
     from sim import Scenario
 
 # Statuses a node ends a run in; each comes with a plain explanation in NodeOutcome.message.
@@ -53,6 +54,8 @@ class NodeSpec:
     output: Literal["screen", "log"] = "screen"
     # Which client library the script imports (rospy: "ros1", rclpy: "ros2"): its import root and wire format.
     flavour: Literal["ros1", "ros2"] = "ros1"
+    # An ament_python node is started through this console_scripts entry point, as `ros2 run` would.
+    entry: EntryPoint | None = None
 
 
 @dataclass(frozen=True)
@@ -65,6 +68,14 @@ class RunSpec:
     name: str = "nominal"
     # Sim seconds a node gets after Ctrl+C before SIGTERM, then before SIGKILL.
     shutdown_grace_s: float = 5.0
+
+    @property
+    def flavour(self) -> str:
+        """The client library flavour of the run's nodes ("ros1" when it has none): one wire format per run."""
+        flavours = {node.flavour for node in self.nodes}
+        if len(flavours) > 1:
+            raise ValueError("a run cannot mix rospy and rclpy nodes: ROS 1 and ROS 2 nodes do not talk to each other")
+        return flavours.pop() if flavours else "ros1"
 
 
 @dataclass

@@ -126,7 +126,9 @@ def test_bag1_without_ground_truth(tmp_path: Path, run: Run, ros1_msgs: MessageB
 
 
 def test_bag2_format(bag2: Recording) -> None:
-    assert bag2.format == "rosbag2" and bag2.truncated is None
+    # a lone .mcap is read as MCAP (streaming, keeps channel metadata); a bag folder or .db3 through rosbags
+    assert bag2.format in ("rosbag2", "mcap-ros2") and bag2.truncated is None
+    assert (bag2.format == "mcap-ros2") == (bag2.path.suffix == ".mcap")
     assert ("/odom", "nav_msgs/Odometry", "") in {(t.topic, t.type, t.callerid) for t in bag2.topics()}
 
 

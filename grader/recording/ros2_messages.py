@@ -1,0 +1,162 @@
+"""ROS 2 message types rosgrade knows: ``ros2msg`` schema text, Jazzy type hashes and strict CDR decoding.
+
+The ROS 2 counterpart of messages.py, built on rosbags' Jazzy type store (plus std_srvs and turtlesim, which it
+lacks), so definitions and RIHS01 hashes are those of a Jazzy install. Types are spelled ``pkg/msg/Name``, as rclpy
+and rosbag2 spell them; ``pkg/Name`` is accepted too.
+"""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from rosbags.typesys import Stores, get_types_from_msg, get_typestore
+from rosbags.typesys.store import Typestore
+
+from grader.recording.errors import RecordingError
+
+_TYPE_NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)/(?:(msg|srv)/)?([A-Za-z][A-Za-z0-9_]*)$")
+
+_EXTRA_TYPES = {
+    "turtlesim/msg/Pose": "float32 x\nfloat32 y\nfloat32 theta\n\nfloat32 linear_velocity\nfloat32 angular_velocity\n",
+    "turtlesim/msg/Color": "uint8 r\nuint8 g\nuint8 b\n",
+}
+
+# Services as (request, response) definitions.
+SERVICES = {
+    "std_srvs/srv/Empty": ("", ""),
+    "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
+    "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),
+    "turtlesim/srv/Kill": ("string name", ""),
+    "turtlesim/srv/SetPen": ("uint8 r\nuint8 g\nuint8 b\nuint8 width\nuint8 off", ""),
+    "turtlesim/srv/Spawn": ("float32 x\nfloat32 y\nfloat32 theta\nstring name", "string name"),
+    "turtlesim/srv/TeleportAbsolute": ("float32 x\nfloat32 y\nfloat32 theta", ""),
+    "turtlesim/srv/TeleportRelative": ("float32 linear\nfloat32 angular", ""),
+}
+
+
+# rosidl gives a structure with no fields this one uint8 member, on the wire too.
+_EMPTY_STRUCT = "uint8 structure_needs_at_least_one_member"
+
+
+def ros2_type_name(type_name: str) -> str:
+    """``pkg/msg/Name`` for ``pkg/Name`` or ``pkg/msg/Name`` (``pkg/srv/Name`` stays); RecordingError otherwise."""
+    match = _TYPE_NAME.match(type_name)
+    if match is None:
+        raise RecordingError(f"{type_name!r} is not a ROS 2 interface type name (expected 'package/msg/Type')")
+    return f"{match.group(1)}/{match.group(2) or 'msg'}/{match.group(3)}"
+
+
+def _catalog_typestore() -> Typestore:
+    store = get_typestore(Stores.ROS2_JAZZY)
+    types = {}
+    for name, text in _EXTRA_TYPES.items():
+        types.update(get_types_from_msg(text, name))
+    for name, (request, response) in SERVICES.items():
+        for part, text in (("Request", request), ("Response", response)):
+            # rosbags files any parsed type under pkg/msg/: move it to the service's own name
+            parsed = get_types_from_msg(text or _EMPTY_STRUCT, f"{name}_{part}")
+            types.update({key.replace("/srv/msg/", "/srv/"): value for key, value in parsed.items()})
+    store.register(types)
+    return store
+
+
+class Ros2Catalog:
+    """Definitions, type hashes and validating CDR decoders for the ROS 2 types rosgrade handles.
+
+    Same interface as ``MessageCatalog``: ``md5sum`` is the Jazzy RIHS01 type hash, which is what a ROS 2 node's
+    ADVERTISE and SUBSCRIBE frames carry in place of ROS 1's md5sum.
+    """
+
+    profile = "ros2"
+    schema_encoding = "ros2msg"
+    message_encoding = "cdr"
+
+    def __init__(self) -> None:
+        self._store = _catalog_typestore()
+        self._msgdefs: dict[str, str] = {}
+        self._hashes: dict[str, str] = {}
+
+    @staticmethod
+    def canonical(type_name: str) -> str:
+        """The spelling this catalog records and compares: ``pkg/msg/Name``."""
+        return ros2_type_name(type_name)
+
+    def _name(self, type_name: str) -> str:
+        name = ros2_type_name(type_name)
+        if name not in self._store.fielddefs:
+            raise RecordingError(f"unknown message type {type_name!r}")
+        return name
+
+    def types(self) -> list[str]:
+        return sorted(self._store.fielddefs)
+
+    def known(self, type_name: str) -> bool:
+        match = _TYPE_NAME.match(type_name)
+        return match is not None and match.group(2) != "srv" and ros2_type_name(type_name) in self._store.fielddefs
+
+    def definition(self, type_name: str) -> str:
+        """The ``ros2msg`` schema text (the type, then every dependency after a ``MSG:`` line), as rosbag2 writes it."""
+        name = self._name(type_name)
+        cached = self._msgdefs.get(name)
+        if cached is None:
+            cached = self._msgdefs[name] = self._store.generate_msgdef(name, ros_version=2)[0]
+        return cached
+
+    def md5sum(self, type_name: str) -> str:
+        """The type's RIHS01 hash (``RIHS01_<sha256>``), as Jazzy computes it."""
+        name = self._name(type_name)
+        cached = self._hashes.get(name)
+        if cached is None:
+            cached = self._hashes[name] = self._store.hash_rihs01(name)
+        return cached
+
+    def message_class(self, type_name: str) -> type:
+        return self._store.types[self._name(type_name)]
+
+    def decode(self, type_name: str, data: bytes | bytearray | memoryview) -> object:
+        """Parse CDR bytes as exactly one ``type_name`` message; RecordingError if they do not fit."""
+        name = self._name(type_name)
+        try:
+            return self._store.deserialize_cdr(bytes(data), name)
+        except Exception as exc:  # noqa: BLE001 - untrusted bytes: every parse failure is the sender's error
+            raise RecordingError(f"{len(data)} bytes are not a valid {name} message: {_reason(exc)}") from None
+
+    def encode(self, type_name: str, message: object) -> bytes:
+        name = self._name(type_name)
+        try:
+            return bytes(self._store.serialize_cdr(message, name))
+        except Exception as exc:  # noqa: BLE001 - rosbags raises assorted errors for a wrong object
+            raise RecordingError(f"cannot serialize {type(message).__name__} as {name}: {exc}") from None
+
+    @staticmethod
+    def service_part(service_name: str, part: str) -> str:
+        """The message type of a service's ``part`` ("Request" or "Response"): ``pkg/srv/Name_Request``."""
+        match = _TYPE_NAME.match(service_name)
+        if match is None:
+            raise RecordingError(f"{service_name!r} is not a service type name (expected 'package/srv/Type')")
+        return f"{match.group(1)}/srv/{match.group(3)}_{part}"
+
+    @staticmethod
+    def known_service(service_name: str) -> bool:
+        match = _TYPE_NAME.match(service_name)
+        return match is not None and f"{match.group(1)}/srv/{match.group(3)}" in SERVICES
+
+    def service_md5sum(self, service_name: str) -> str:
+        """The RIHS01 hash of a known service's request type (what a ROS 2 client and server must agree on)."""
+        match = _TYPE_NAME.match(service_name)
+        if match is None or f"{match.group(1)}/srv/{match.group(3)}" not in SERVICES:
+            raise RecordingError(f"unknown service type {service_name!r}")
+        return self._store.hash_rihs01(f"{match.group(1)}/srv/{match.group(3)}_Request")
+
+
+def _reason(exc: BaseException) -> str:
+    text = str(exc) or type(exc).__name__
+    if "unpack_from requires a buffer" in text or "index out of range" in text:
+        return "too short, the data ends inside the message"
+    return text
+
+
+@lru_cache(maxsize=1)
+def ros2_catalog() -> Ros2Catalog:
+    """The process-wide ROS 2 catalog (building a type store takes ~70 ms)."""
+    return Ros2Catalog()
