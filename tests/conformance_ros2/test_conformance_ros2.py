@@ -1,0 +1,163 @@
+"""ROS 2 conformance: each probe node behaves under rosgrade as under real rclpy (PyPI wheels, Fast DDS).
+
+* ``test_same_as_real_rclpy``: runs each probe under real rclpy (real_ros2.py, beside real_robot2.py) and under
+  rosgrade (rosgrade_side2.py) and compares stdout and stderr line by line (masked: conformance_compare2), the exit
+  status, and for publishing probes what the robot received (summarise_commands: facts, not counts).
+* ``test_reference_behaviour``: the measured behaviour (probe_cases2.py) on one side: on the real side (which keeps
+  the harness and the reference honest) and on ours.
+
+The tests marked realros need the real ROS 2 venv (`.ci/ros2-venv`) and skip, saying why, without it; the reference
+check of our side needs only rosgrade. Each probe runs at
+most once per side per session, plus re-runs on the real side when a comparison fails (REAL_ATTEMPTS): real rclpy
+runs on wall time, and a Ctrl+C can race rclpy's own signal thread.
+"""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from conformance_compare2 import (  # noqa: E402
+    diff_lines, missing_lines, normalise, summarise_commands,
+)
+from probe_cases2 import CASES, Case  # noqa: E402
+from real_ros2 import RealRos2, RealRos2Error, unavailable_reason  # noqa: E402
+from rosgrade_side2 import run_ours  # noqa: E402
+
+pytestmark = pytest.mark.slow
+REAL_ATTEMPTS = 3
+IDS = [c.id for c in CASES]
+
+
+class _RealCache:
+    """Runs each probe under real rclpy when first needed (and again on request), beside one shared robot."""
+
+    def __init__(self, tmp: Path) -> None:
+        self.tmp = tmp
+        self.ros: RealRos2 | None = None
+        self.results: dict[str, list] = {}
+
+    def runs(self, case: Case):
+        """The real runs of `case` so far, then one more each time the caller asks, up to REAL_ATTEMPTS."""
+        runs = self.results.setdefault(case.id, [])
+        for attempt in range(REAL_ATTEMPTS):
+            if attempt == len(runs):
+                runs.append(self._run(case))
+            yield runs[attempt]
+
+    def _run(self, case: Case):
+        try:
+            if self.ros is None:
+                self.ros = RealRos2(self.tmp / "realros2").__enter__()
+            return self.ros.run_probe(case.path, case.args, shutdown_at=case.shutdown_at, duration=case.duration)
+        except RealRos2Error as exc:
+            pytest.fail(f"the real-ROS 2 harness failed for {case.id}: {exc}")
+
+    def close(self) -> None:
+        if self.ros is not None:
+            self.ros.close()
+
+
+class _OursCache:
+    """Runs each probe under rosgrade at most once."""
+
+    def __init__(self, tmp: Path) -> None:
+        self.tmp = tmp
+        self.results: dict[str, object] = {}
+
+    def get(self, case: Case):
+        if case.id not in self.results:
+            try:
+                self.results[case.id] = run_ours(case.path, case.args, shutdown_at=case.shutdown_at,
+                                                 duration=case.duration, workdir=self.tmp / case.id)
+            except Exception as exc:  # noqa: BLE001 - report any failure of our side as this case's failure
+                self.results[case.id] = exc
+        result = self.results[case.id]
+        if isinstance(result, Exception):
+            pytest.fail(f"rosgrade could not run {case.id}: {type(result).__name__}: {result}")
+        return result
+
+
+@pytest.fixture(scope="module")
+def real_outputs(tmp_path_factory: pytest.TempPathFactory):
+    reason = unavailable_reason()
+    if reason:
+        pytest.skip(reason)
+    cache = _RealCache(tmp_path_factory.mktemp("real2"))
+    yield cache
+    cache.close()
+
+
+@pytest.fixture(scope="module")
+def our_outputs(tmp_path_factory: pytest.TempPathFactory):
+    return _OursCache(tmp_path_factory.mktemp("ours2"))
+
+
+def _exit_code(result) -> int | None:
+    """Exit status as subprocess reports it (negative: killed by that signal); None when the harness killed it."""
+    if getattr(result, "exit_signal", None):
+        return -result.exit_signal
+    return result.exit_code
+
+
+def _commands(case: Case, result) -> list[str]:
+    return summarise_commands(result.commands, result.sigint_s, case.markers)
+
+
+def _describe(side: str, result) -> str:
+    return (f"--- {side} stdout ---\n{result.stdout}--- {side} stderr ---\n{result.stderr}"
+            f"--- {side} exit {_exit_code(result)}; Ctrl+C at {result.sigint_s}; {result.notes}\n")
+
+
+def _differences(case: Case, real, ours) -> list[str]:
+    problems = diff_lines("stdout", normalise(real.stdout, case.volatile), normalise(ours.stdout, case.volatile))
+    problems += diff_lines("stderr", normalise(real.stderr, case.volatile), normalise(ours.stderr, case.volatile))
+    if _exit_code(real) != _exit_code(ours):
+        problems.append(f"exit status: real {_exit_code(real)}, ours {_exit_code(ours)}")
+    if case.commands is not None:
+        problems += diff_lines("/cmd_vel", _commands(case, real), _commands(case, ours))
+    return problems
+
+
+def _check_reference(case: Case, result) -> list[str]:
+    out, err = normalise(result.stdout, case.volatile), normalise(result.stderr, case.volatile)
+    problems = [f"stdout lacks (in order): {line!r}" for line in missing_lines(case.stdout, out)]
+    problems += [f"stderr lacks (in order): {line!r}" for line in missing_lines(case.stderr, err)]
+    if case.stderr_empty and err:
+        problems.append(f"stderr should be empty, got: {err}")
+    if _exit_code(result) != case.exit_code:
+        problems.append(f"exit status {_exit_code(result)}, expected {case.exit_code}")
+    if case.shutdown_at is not None and (result.sigint_s is None or abs(result.sigint_s - case.shutdown_at) > 0.0101):
+        problems.append(f"Ctrl+C at {result.sigint_s} s after the origin, asked for {case.shutdown_at} s")
+    if case.commands is not None:
+        problems += [f"/cmd_vel lacks: {line!r}" for line in missing_lines(case.commands, _commands(case, result))]
+    return problems
+
+
+@pytest.mark.realros
+@pytest.mark.parametrize("case", CASES, ids=IDS)
+def test_same_as_real_rclpy(case: Case, real_outputs: _RealCache, our_outputs: _OursCache) -> None:
+    ours = our_outputs.get(case)
+    for real in real_outputs.runs(case):
+        problems = _differences(case, real, ours)
+        if not problems:
+            return
+    pytest.fail(f"{case.id}: {len(problems)} difference(s) from real rclpy (in each of {REAL_ATTEMPTS} real runs; "
+                "the last shown):\n" + "\n".join(problems) + "\n\n" + _describe("real", real) + _describe("ours", ours))
+
+
+@pytest.mark.parametrize("side", [pytest.param("real", marks=pytest.mark.realros), "ours"])
+@pytest.mark.parametrize("case", CASES, ids=IDS)
+def test_reference_behaviour(case: Case, side: str, request: pytest.FixtureRequest) -> None:
+    if side == "ours":
+        results = [request.getfixturevalue("our_outputs").get(case)]
+    else:
+        results = request.getfixturevalue("real_outputs").runs(case)
+    for result in results:
+        problems = _check_reference(case, result)
+        if not problems:
+            return
+    pytest.fail(f"{case.id} ({side}):\n" + "\n".join(problems) + "\n\n" + _describe(side, result))
