@@ -72,6 +72,7 @@ class MessageCatalog:
     profile = "ros1"
     schema_encoding = "ros1msg"
     message_encoding = "ros1"
+    log_levels = frozenset({1, 2, 4, 8, 16})  # rosgraph_msgs/Log severities
 
     @staticmethod
     def canonical(type_name: str) -> str:

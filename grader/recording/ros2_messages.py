@@ -70,6 +70,7 @@ class Ros2Catalog:
     profile = "ros2"
     schema_encoding = "ros2msg"
     message_encoding = "cdr"
+    log_levels = frozenset({10, 20, 30, 40, 50})  # rcl_interfaces/msg/Log severities
 
     def __init__(self) -> None:
         self._store = _catalog_typestore()

@@ -1,0 +1,1 @@
+"""ROS 2 builtin_interfaces interfaces (rosgrade's rosidl runtime)."""

@@ -1,0 +1,1 @@
+"""ROS 2 geometry_msgs interfaces (rosgrade's rosidl runtime)."""

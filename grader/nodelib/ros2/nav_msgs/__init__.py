@@ -1,0 +1,1 @@
+"""ROS 2 nav_msgs interfaces (rosgrade's rosidl runtime)."""

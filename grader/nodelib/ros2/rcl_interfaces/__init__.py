@@ -1,0 +1,1 @@
+"""ROS 2 rcl_interfaces interfaces (rosgrade's rosidl runtime)."""

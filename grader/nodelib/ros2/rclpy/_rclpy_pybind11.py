@@ -1,0 +1,29 @@
+"""The names rclpy's C extension exports that student code meets: RCLError (tracebacks show this class path),
+InvalidHandle and SignalHandlerOptions."""
+from __future__ import annotations
+
+from enum import IntEnum
+
+
+class RCLError(RuntimeError):
+    """An rcl call failed (raised by real rclpy's pybind11 extension with rcl's error text)."""
+
+
+class InvalidHandle(Exception):
+    """An entity was used after its destruction was requested."""
+
+
+class SignalHandlerOptions(IntEnum):
+    """Which signal handlers rclpy.init installs."""
+
+    NO = 0
+    SIGINT = 1
+    SIGTERM = 2
+    ALL = 3
+
+
+# rcl's error texts as real rclpy (the PyPI wheels, built under /project) prints them.
+PUBLISHER_CONTEXT_INVALID = "publisher's context is invalid, at /project/src/rcl/publisher.c:427"
+CONTEXT_INVALID = ("the given context is not valid, either rcl_init() was not called or rcl_shutdown() was called., "
+                   "at /project/src/rcl/guard_condition.c:65")
+DESTROYED = "cannot use Destroyable because destruction was requested"

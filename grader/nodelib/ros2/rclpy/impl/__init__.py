@@ -1,0 +1,1 @@
+"""rclpy.impl: the logger implementation and severities."""

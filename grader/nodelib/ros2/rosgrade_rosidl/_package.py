@@ -1,0 +1,29 @@
+"""The lazy body of a message package's ``msg``/``srv`` module: classes are built on first attribute access."""
+from __future__ import annotations
+
+from typing import Any, Callable
+
+from ._classes import message_class, service_class
+from ._defs import MESSAGES, SERVICES
+
+
+def lazy_module(module_name: str) -> tuple[Callable[[str], Any], Callable[[], list[str]], list[str]]:
+    """``(__getattr__, __dir__, __all__)`` for the module ``pkg.msg`` or ``pkg.srv``."""
+    package, namespace = module_name.split(".")
+    prefix = f"{package}/{namespace}/"
+    if namespace == "srv":
+        names = sorted(n[len(prefix):] for n in SERVICES if n.startswith(prefix))
+        build = service_class
+    else:
+        names = sorted(n[len(prefix):] for n in MESSAGES if n.startswith(prefix))
+        build = message_class
+    known = frozenset(names)
+
+    def __getattr__(name: str) -> Any:
+        if name not in known:
+            raise AttributeError(f"module {module_name!r} has no attribute {name!r}")
+        return build(prefix + name)
+
+    def __dir__() -> list[str]:
+        return list(names)
+    return __getattr__, __dir__, list(names)

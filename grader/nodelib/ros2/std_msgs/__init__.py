@@ -1,0 +1,1 @@
+"""ROS 2 std_msgs interfaces (rosgrade's rosidl runtime)."""

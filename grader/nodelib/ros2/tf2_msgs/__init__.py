@@ -1,0 +1,1 @@
+"""ROS 2 tf2_msgs interfaces (rosgrade's rosidl runtime)."""
