@@ -380,9 +380,13 @@ def cmd_bench(args: argparse.Namespace) -> int:
     runtime: dict[str, Any] = {}
     if not args.no_node_runs:
         move_circle = args.reference / "move_circle.py" if args.reference else None
+        ros2 = args.reference_ros2 / "move_circle.py" if args.reference_ros2 else None
+        if ros2 is not None and not ros2.is_file():
+            ros2 = next(args.reference_ros2.rglob("move_circle.py"), None)
         with err.status("Measuring node runs (40 s of sim time each) …"):
             runtime = _module("grader.runtime.bench").runtime_benchmark(
-                move_circle if move_circle is not None and move_circle.is_file() else None, repeats=args.repeats)
+                move_circle if move_circle is not None and move_circle.is_file() else None, repeats=args.repeats,
+                move_circle_ros2=ros2)
     checks = []
     if args.reference:
         if not args.reference.exists():
@@ -700,6 +704,9 @@ def build_parser() -> argparse.ArgumentParser:
     bench = commands.add_parser("bench", help="speed figures on this machine")
     bench.add_argument("--reference", type=Path, metavar="DIR",
                        help="also time a whole check of DIR (e.g. reference_solutions): per stage, -j 1 and -j N")
+    bench.add_argument("--reference-ros2", type=Path, metavar="DIR",
+                       help="also time the rclpy move_circle.py found under DIR (e.g. "
+                            "reference_solutions_ros2) beside the rospy one")
     bench.add_argument("-j", "--jobs", type=_positive_int, default=None, metavar="N",
                        help="the parallel check's -j (default: the cores this process may use)")
     bench.add_argument("--repeats", type=_positive_int, default=3, metavar="N",

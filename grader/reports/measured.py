@@ -40,7 +40,7 @@ PHRASES: dict[str, Phrase] = {
     "n_off_axis": Phrase("{n_off_axis} commands with a non-zero component the robot cannot use", when="n_off_axis"),
     # shutdown
     "rest_time": Phrase("at rest {rest_time} s after Ctrl+C"),
-    "zero_command_delay": Phrase("zero Twist sent {zero_command_delay} s after Ctrl+C"),
+    "zero_command_delay": Phrase("zero command sent {zero_command_delay} s after Ctrl+C"),
     "rest_distance": Phrase("moved {rest_distance} m after Ctrl+C"),
     "exit_delay": Phrase("node exited {exit_delay} s after Ctrl+C"),
     "moving_at_end": Phrase("still moving when the recording ended", when="moving_at_end"),

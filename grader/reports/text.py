@@ -76,5 +76,6 @@ def foxglove_help(recording: str) -> list[str]:
         f"Open a recording in Foxglove: go to https://app.foxglove.dev (or the desktop app) → "
         f"Open local file → {recording}",
         "Add a Plot panel with paths such as /odom.pose.pose.position.x, /odom.pose.pose.position.y "
-        "and /cmd_vel.linear.x; a Raw Messages panel on /rosout shows your node's log.",
+        "and /cmd_vel.linear.x (/cmd_vel.twist.linear.x for a ROS 2 TwistStamped); a Raw Messages panel on /rosout "
+        "shows your node's log.",
     ]

@@ -116,14 +116,14 @@ def summarise_commands(commands: Sequence[CommandLike], sigint_s: float | None, 
 
     Before Ctrl+C: whether commands arrived, whether all were non-zero and on the 0.1 s grid from the origin (the
     probes' 10 Hz timers start at their origin). After: whether a zero command and whether a non-zero one arrived.
-    With `markers`, the linear.y values that arrived (probes number their publishes there).
+    With `markers`, instead of the timing: the linear.y values that arrived (probes number their publishes there).
     """
     cut = float("inf") if sigint_s is None else sigint_s
     before = [c for c in commands if c.t < cut - 1e-9]
     after = [c for c in commands if c.t >= cut - 1e-9]
     on_grid = all(abs(c.t * 10 - round(c.t * 10)) <= GRID_TOLERANCE_S * 10 for c in before)
     lines = [f"before Ctrl+C: {'commands arrived' if before else 'nothing arrived'}"]
-    if before:
+    if before and not markers:
         lines.append(f"before Ctrl+C: all non-zero {not any(_is_zero(c) for c in before)}, "
                      f"on the 0.1 s grid {on_grid}")
     if sigint_s is not None:

@@ -59,12 +59,15 @@ print("create_rate(5) steps", [round((b - a) / 1e9, 2) for a, b in zip(stamps, s
 
 executor = rclpy.executors.SingleThreadedExecutor()
 executor.add_node(node)
-threading.Thread(target=executor.spin, daemon=True).start()
+spinner = threading.Thread(target=executor.spin)
+spinner.start()
 before = node.get_clock().now()
 print("sleep_for(0.3) returned", node.get_clock().sleep_for(Duration(seconds=0.3)))
 advanced = (node.get_clock().now() - before).nanoseconds / 1e9
 print("sleep_for(0.3) advanced about 0.3", 0.3 <= advanced < 0.33)
 d = node.get_clock().now() - before
 print("Time - Time is", type(d).__name__)
+executor.shutdown()  # stop the spinning thread first: shutting rclpy down under it races (a traceback or an abort)
+spinner.join()
 rclpy.shutdown()
 print("end")
