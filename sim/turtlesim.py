@@ -10,8 +10,8 @@ computed the same way. The one deliberate difference: the 1 s timeout counts sim
 Services (``services``, ``call``) are turtle_frame.cpp's ``/clear``, ``/reset``, ``/spawn``, ``/kill`` and each
 turtle's ``set_pen``, ``teleport_absolute`` and ``teleport_relative``, handled at once at the current time; turtlesim
 answers them in its next update's ``spinOnce``, before moving the turtles, which has the same effect on the turtles.
-The background is always the ``background_r/g/b`` defaults: parameters live in each node here, so a node's
-``set_param`` cannot reach the world.
+The background is turtle_frame.cpp's: its private ``background_r/g/b`` parameters on the run's parameter server
+(``use_parameters``), given their defaults at start when unset, and read again by every ``/clear`` and ``/reset``.
 """
 from __future__ import annotations
 
@@ -21,6 +21,7 @@ import struct
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property, partial
+from typing import Protocol
 
 from sim.samples import (ColorSample, CommandSample, GroundTruthSample, LogSample, Sample, ServiceResult,
                          TurtlePoseSample, WorldService, WorldTopic)
@@ -44,10 +45,46 @@ NODE_NAME = "/turtlesim"
 WARN = 4
 INFO = 2
 ERROR = 8
+# turtlesim's private parameters for the background colour (turtle_frame.cpp); DEFAULT_BACKGROUND holds their defaults.
+BACKGROUND_PARAMS = tuple(f"{NODE_NAME}/background_{c}" for c in "rgb")
+# What a C++ double-to-int conversion gives on x86 for NaN and values out of int's range.
+_INT_INDEFINITE = -(1 << 31)
 # Characters roscpp's names::validate accepts after the first one of a graph resource name.
 _NAME_CHARS = frozenset(string.ascii_letters + string.digits + "/_")
 
 Request = Mapping[str, object]
+
+
+class Parameters(Protocol):
+    """The run's parameter server as turtlesim uses it (absolute names)."""
+
+    def has(self, name: str) -> bool: ...
+
+    def get(self, name: str, default: object = None) -> object: ...
+
+    def set(self, name: str, value: object) -> None: ...
+
+
+def roscpp_int(value: object, default: int) -> int:
+    """What roscpp's ``param(name, int&, default)`` gives for a stored value: an int as it is, a double rounded half
+    up (``fmod(d, 1) < 0.5`` floors, else ceils), anything else (bool, string, list, missing) the default."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return default
+    if isinstance(value, int):
+        return value
+    if not math.isfinite(value):
+        return _INT_INDEFINITE
+    rounded = math.floor(value) if math.fmod(value, 1.0) < 0.5 else math.ceil(value)
+    return rounded if -(1 << 31) <= rounded < (1 << 31) else _INT_INDEFINITE
+
+
+def background(params: Parameters | None) -> Rgb:
+    """turtle_frame.cpp's ``clear()`` colour: each channel from its parameter (default when unusable), then
+    ``qRgb``, which keeps the low 8 bits."""
+    if params is None:
+        return DEFAULT_BACKGROUND
+    return tuple(roscpp_int(params.get(name), default) & 0xFF
+                 for name, default in zip(BACKGROUND_PARAMS, DEFAULT_BACKGROUND))
 
 
 class TurtlesimError(Exception):
@@ -142,6 +179,7 @@ class TurtlesimWorld(ScenarioTimes):
         self.scenario = scenario
         self.mode_name = "kinematic"
         self.canvas = Canvas(DEFAULT_BACKGROUND)
+        self.params: Parameters | None = None  # the run's parameter server, once given
         self.turtles: dict[str, Turtle] = {}
         self._id_counter = 0  # turtle_frame.cpp's id_counter_: the N of the last turtleN it named
         self._time_ns = 0
@@ -213,6 +251,15 @@ class TurtlesimWorld(ScenarioTimes):
         if handler is None:
             raise TurtlesimError(f"turtlesim serves no service {name!r}")
         return handler(request)
+
+    def use_parameters(self, params: Parameters) -> None:
+        """Start on the run's parameter server as turtle_frame.cpp's constructor does: each background parameter
+        not set yet gets its default, then the canvas is filled with the colour they give."""
+        for name, default in zip(BACKGROUND_PARAMS, DEFAULT_BACKGROUND):
+            if not params.has(name):
+                params.set(name, default)
+        self.params = params
+        self.canvas.clear(background(params))
 
     def command(self, topic: str, linear: tuple[float, float, float] = (0.0, 0.0, 0.0),
                 angular: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> bool:
@@ -368,8 +415,8 @@ class TurtlesimWorld(ScenarioTimes):
         return handlers
 
     def _clear(self, request: Request) -> ServiceResult:  # noqa: ARG002 -- std_srvs/Empty
-        """/clear: the canvas back to the background."""
-        self.canvas.clear()
+        """/clear: the canvas filled with the background the parameters give now."""
+        self.canvas.clear(background(self.params))
         return ServiceResult(True, {}, (self._log(INFO, "Clearing turtlesim."),))
 
     def _reset(self, request: Request) -> ServiceResult:  # noqa: ARG002 -- std_srvs/Empty
@@ -378,7 +425,7 @@ class TurtlesimWorld(ScenarioTimes):
         self.turtles.clear()
         self._id_counter = 0
         spawned = self._spawn_default()
-        self.canvas.clear()
+        self.canvas.clear(background(self.params))
         return ServiceResult(True, {}, (said, spawned))
 
     def _spawn_service(self, request: Request) -> ServiceResult:

@@ -105,7 +105,8 @@ def node_specs(launch: Launch, packages: Mapping[str, Path], stdin: str | None =
         args = (*node.args, *(f"{source}:={target}" for source, target in remaps), f"__name:={node.name}")
         specs.append(NodeSpec(script=Path(os.path.abspath(script)), args=args, stdin=stdin,
                               ros_namespace=node.namespace.rstrip("/") or None,  # as roslaunch sets ROS_NAMESPACE
-                              params=dict(launch.params), required=node.required, output=node.output))
+                              params={**launch.params, **turtlesim.world_params(launch, world)},
+                              required=node.required, output=node.output))
     if not specs:
         raise LaunchError(f"{launch.file.name} starts only turtlesim_node ({world.node.where}): add a <node> for "
                           "your script")

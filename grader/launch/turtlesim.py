@@ -26,6 +26,7 @@ ROBOT = "turtlesim"  # the rubric robot that is turtlesim's world
 WORLD_NAMES = ("clear", "reset", "spawn", "kill", "turtle1/cmd_vel", "turtle1/pose", "turtle1/color_sensor",
                "turtle1/set_pen", "turtle1/teleport_absolute", "turtle1/teleport_relative")
 UNSERVED = "/no_turtlesim_here"  # where a world name goes when the launched turtlesim does not use it
+WORLD_NAME = "/turtlesim"  # the world's node name: its private parameters (background_r...) live under it
 
 
 @dataclass(frozen=True)
@@ -77,6 +78,23 @@ def bridge(node: LaunchNode, turtlesim: TurtlesimNode | None) -> tuple[tuple[str
     return (*own, *((source, target) for source, target in sorted(leads.items()) if source not in remapped))
 
 
+def _private(launch: Launch, turtlesim: TurtlesimNode | None) -> dict[str, object]:
+    """The parameters the launch file sets under turtlesim_node's name (its private ones: background_r...)."""
+    if turtlesim is None:
+        return {}
+    prefix = turtlesim.node.full_name + "/"
+    return {name: value for name, value in sorted(launch.params.items()) if name.startswith(prefix)}
+
+
+def world_params(launch: Launch, turtlesim: TurtlesimNode | None) -> dict[str, object]:
+    """turtlesim_node's private parameters where the world reads them (under /turtlesim), set before it starts as
+    roslaunch sets them; nothing to add when the launch file names it /turtlesim already."""
+    if turtlesim is None or turtlesim.node.full_name == WORLD_NAME:
+        return {}
+    cut = len(turtlesim.node.full_name)
+    return {WORLD_NAME + name[cut:]: value for name, value in _private(launch, turtlesim).items()}
+
+
 def check_robot(launch: Launch, turtlesim: TurtlesimNode | None, robot: str) -> list[str]:
     """Findings on the world the launch file starts against the task's robot; LaunchError when they cannot meet."""
     if turtlesim is not None and robot != ROBOT:
@@ -98,8 +116,9 @@ def check_robot(launch: Launch, turtlesim: TurtlesimNode | None, robot: str) -> 
                           if w in turtlesim.launched)
         notes.append(f"{turtlesim.node.where}: turtlesim_node runs as {turtlesim.node.full_name}, so its turtle uses "
                      f"{moved or 'other service names'}, as with roslaunch; turtlesim's usual names reach no turtle.")
-    private = sorted(k for k in launch.params if k.startswith(turtlesim.node.full_name + "/")) if turtlesim else []
-    if private:
-        notes.append(f"{turtlesim.node.where}: {', '.join(private)} set on turtlesim_node are not modelled: the "
-                     "grader's turtlesim keeps its default background colour.")
+    private = _private(launch, turtlesim)
+    if private and turtlesim.node.full_name != WORLD_NAME:
+        notes.append(f"{turtlesim.node.where}: the grader's turtlesim runs as {WORLD_NAME}: it starts with "
+                     f"{', '.join(private)} as its own parameters, but a change to them while it runs does not "
+                     "reach it (it reads them again on /clear and /reset under its own name).")
     return notes

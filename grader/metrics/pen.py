@@ -11,7 +11,10 @@ state the recorded service calls set, using the world's own ``Turtle`` and ``Can
   ``/spawn`` starts a turtle where it asked; ``/kill`` ends one;
 - a teleport is kept until the turtle's next pose and drawn then, with the pen of that moment (turtle.cpp applies
   teleports at the start of its next update);
-- each pose draws the line from where the turtle was, unless the pose is where the turtle already is.
+- each pose draws the line from where the turtle was, unless the pose is where the turtle already is;
+- the recorded parameter changes are replayed among the calls, so ``/clear`` and ``/reset`` fill the canvas with the
+  background the parameters gave then, and the canvas starts with the one they gave at the start (the default
+  background in a recording without them).
 
 turtle1 starts at its first recorded pose (the world's moves before that are not in the recording). Its positions
 come from ground truth (float64) when asked and recorded; spawned turtles have only their turtlesim/Pose (float32),
@@ -24,12 +27,36 @@ from typing import Literal
 
 import numpy as np
 
-from grader.metrics.run import TURTLE_POSE_TOPIC, RunData, ServiceCall, Trajectory
+from grader.metrics.run import TURTLE_POSE_TOPIC, ParamChange, RunData, ServiceCall, Trajectory
+from grader.nodelib.common import rosgrade_params
 from sim.turtle_canvas import Canvas
-from sim.turtlesim import CANVAS_M, CENTRE, DEFAULT_TURTLE, Turtle
+from sim.turtlesim import CANVAS_M, CENTRE, DEFAULT_TURTLE, Turtle, background
 
 # (topic, x, y, theta) of one recorded pose
 Pose = tuple[str, float, float, float]
+
+
+class _Params:
+    """The run's parameter server as the recording replays it (what the world reads its background from)."""
+
+    def __init__(self) -> None:
+        self.tree: dict = {}
+
+    def has(self, name: str) -> bool:
+        return self.get(name, self) is not self
+
+    def get(self, name: str, default: object = None) -> object:
+        try:
+            return rosgrade_params.lookup(self.tree, name)
+        except KeyError:
+            return default
+
+    def set(self, name: str, value: object) -> None:
+        rosgrade_params.set_value(self.tree, name, value)
+
+    def change(self, change: ParamChange) -> None:
+        """Replay one recorded change (the session recorded only changes the server made)."""
+        rosgrade_params.apply(self.tree, [(change.name, change.value)])
 
 
 @dataclass(frozen=True)
@@ -47,26 +74,38 @@ def redraw(run: RunData, source: Literal["ground_truth", "odometry"] = "ground_t
     if len(first):
         paths[TURTLE_POSE_TOPIC] = first
     canvas = Canvas()
+    params = _Params()
     live: dict[str, Turtle] = {}
     if len(first):
         live[DEFAULT_TURTLE] = Turtle.spawned(DEFAULT_TURTLE, float(first.x[0]), float(first.y[0]), float(first.yaw[0]))
-    for event in _events(paths, run.service_calls):
-        if isinstance(event, ServiceCall):
-            _serve(event, live, canvas)
+    for event in _events(paths, run.service_calls, run.param_changes):
+        if isinstance(event, ParamChange):
+            params.change(event)
+            if event is run.param_changes[0]:  # the tree the world started with: its canvas was filled from it
+                canvas.clear(background(params))
+        elif isinstance(event, ServiceCall):
+            _serve(event, live, canvas, params)
         else:
             _move(event, live, canvas)
     return Drawing(canvas, tuple(live[name] for name in sorted(live)))
 
 
-def _events(paths: dict[str, Trajectory], calls: tuple[ServiceCall, ...]) -> list[Pose | ServiceCall]:
-    """Poses and calls in the order the world saw them: by time; at one time the poses first, turtle by turtle in
-    topic order (the world updates turtles in name order, the same order for turtleN names), then the calls in the
-    order they were served."""
-    keyed: list[tuple[float, int, str, Pose | ServiceCall]] = []
+Event = Pose | ServiceCall | ParamChange
+
+
+def _events(paths: dict[str, Trajectory], calls: tuple[ServiceCall, ...],
+            params: tuple[ParamChange, ...] = ()) -> list[Event]:
+    """Poses, calls and parameter changes in the order the world saw them: by time; at one time the poses first,
+    turtle by turtle in topic order (the world updates turtles in name order, the same order for turtleN names), then
+    the calls and changes in the order they were made."""
+    keyed: list[tuple[float, int, str, Event]] = []
     for topic, path in paths.items():
         keyed += [(t, 0, topic, (topic, x, y, yaw))
                   for t, x, y, yaw in zip(path.t.tolist(), path.x.tolist(), path.y.tolist(), path.yaw.tolist())]
-    keyed += [(call.t, 1, "", call) for call in calls]
+    made: list[ServiceCall | ParamChange] = list(calls)
+    for change in reversed(params):  # each before the call that came after it
+        made.insert(change.calls_before, change)
+    keyed += [(event.t, 1, "", event) for event in made]
     keyed.sort(key=lambda k: k[:3])  # stable: calls at one time keep their order
     return [event for *_, event in keyed]
 
@@ -89,17 +128,17 @@ def _move(pose: Pose, live: dict[str, Turtle], canvas: Canvas) -> None:
     turtle.draw(canvas, old)
 
 
-def _serve(call: ServiceCall, live: dict[str, Turtle], canvas: Canvas) -> None:
+def _serve(call: ServiceCall, live: dict[str, Turtle], canvas: Canvas, params: _Params) -> None:
     """What a call the world answered did to the turtles and the canvas (a failed call did nothing)."""
     if call.response is None:
         return
     request = call.request
     if call.service == "/clear":
-        canvas.clear()
+        canvas.clear(background(params))
     elif call.service == "/reset":
         live.clear()
         live[DEFAULT_TURTLE] = Turtle.spawned(DEFAULT_TURTLE, CENTRE, CENTRE, 0.0)
-        canvas.clear()
+        canvas.clear(background(params))
     elif call.service == "/spawn":
         name = str(call.response["name"])
         live[name] = Turtle.spawned(name, float(request["x"]), float(request["y"]), float(request["theta"]))

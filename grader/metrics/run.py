@@ -13,6 +13,7 @@ DRIVER_CALLERID = "/rosgrade_driver"  # the grader's scripted driver; its comman
 TURTLE_POSE_TOPIC = "/turtle1/pose"  # turtlesim's pose of turtle1 (turtlesim/Pose), its only odometry
 TURTLE_POSE_TYPE = "turtlesim/Pose"
 SERVICE_PREFIX = "/rosgrade/service"  # <service>/request, then <service>/response or <service>/error (the session's)
+PARAM_TOPIC = "/rosgrade/param"  # the run's parameter server: the tree it started with, then each change (JSON)
 RUN_KEYS = ("shutdown_requested_s", "exit_code", "exit_signal", "status", "ended_s")
 
 
@@ -95,6 +96,17 @@ class ServiceCall:
     response: dict[str, Any] | None
 
 
+@dataclass(frozen=True)
+class ParamChange:
+    """A change to the run's parameter server: sim time (s), the name ("/" with the whole tree in the first one, the
+    tree the run started with), the value (None: deleted), and how many served calls came before it."""
+
+    t: float
+    name: str
+    value: Any
+    calls_before: int
+
+
 # rospy's console prefix: "[INFO] [1795250908.523113, 21.060000]: " (wall and sim time) before the message.
 LOG_PREFIX = re.compile(
     r"^\s*\[\s*(?P<level>DEBUG|INFO|WARN|WARNING|ERROR|FATAL)\s*\]\s*(?:\[[^\]]*\]\s*:?)?\s?", re.I)
@@ -159,6 +171,7 @@ class RunData:
     shutdown_at: float | None = None  # scenario's Ctrl+C time, seconds after start
     poses: dict[str, Trajectory] = field(default_factory=dict)  # turtlesim: each turtle's pose topic → its poses
     service_calls: tuple[ServiceCall, ...] = ()  # in the order they were served
+    param_changes: tuple[ParamChange, ...] = ()  # in the order they were made (none: a recording without them)
     client_library: str = "rospy"  # the node's, as the recording says: "rospy" or "rclpy"
     # Velocity command types nodes published on the robot's command topics that its base does not take
     # (a Twist to the Jazzy TurtleBot3, which drives on TwistStamped), comma-separated.
@@ -186,6 +199,7 @@ class RunData:
     def from_recording(cls, recording: Any, start_time: float = 0.0, shutdown_at: float | None = None) -> RunData:
         """Adapt a ``grader.recording.Recording`` (documented API in DEVELOPERS.md) into arrays."""
         truth = recording.ground_truth()
+        calls, params = _calls_and_params(recording)
         return cls(
             odometry=_odometry(recording),
             ground_truth=None if truth is None else _trajectory(truth, "ground_truth"),
@@ -195,7 +209,8 @@ class RunData:
             start_time=start_time,
             shutdown_at=shutdown_at,
             poses=turtle_poses(recording),
-            service_calls=service_calls(recording),
+            service_calls=calls,
+            param_changes=params,
             client_library=_client_library(recording),
             ignored_command_types=_ignored_command_types(recording),
             command_type=_command_type(recording),
@@ -270,18 +285,47 @@ def turtle_poses(recording: Any) -> dict[str, Trajectory]:
 def service_calls(recording: Any) -> tuple[ServiceCall, ...]:
     """The calls the world served, each request paired with the response or error recorded after it (a call is
     answered before the next one is made); an error with no request is a call no server took (not served)."""
-    topics = {i.topic for i in getattr(recording, "topics", list)() if i.topic.startswith(SERVICE_PREFIX + "/")}
+    return _calls_and_params(recording)[0]
+
+
+def param_changes(recording: Any) -> tuple[ParamChange, ...]:
+    """The changes to the run's parameter server, each placed among the served calls."""
+    return _calls_and_params(recording)[1]
+
+
+def _calls_and_params(recording: Any) -> tuple[tuple[ServiceCall, ...], tuple[ParamChange, ...]]:
+    """The served calls and the parameter changes, read in one pass so that their order is the run's."""
+    topics = {i.topic for i in getattr(recording, "topics", list)()
+              if i.topic.startswith(SERVICE_PREFIX + "/") or i.topic == PARAM_TOPIC}
     if not topics:
-        return ()
-    calls, open_requests = [], {}
+        return (), ()
+    calls, params, open_requests = [], [], {}
     for topic, t_ns, message in recording.messages_on(topics):
+        if topic == PARAM_TOPIC:
+            change = _param_change(t_ns, message, len(calls))
+            if change is not None:
+                params.append(change)
+            continue
         service, _, part = topic[len(SERVICE_PREFIX):].rpartition("/")
         if part == "request":
             open_requests[service] = (t_ns, _fields(message))
         elif service in open_requests:
             t_req, request = open_requests.pop(service)
             calls.append(ServiceCall(t_req / 1e9, service, request, _fields(message) if part == "response" else None))
-    return tuple(calls)
+    return tuple(calls), tuple(params)
+
+
+def _param_change(t_ns: int, message: Any, calls_before: int) -> ParamChange | None:
+    """A recorded ``{"op": "set", "name", "value"}`` or ``{"op": "delete", "name"}``; None when it is neither."""
+    change = _decode(getattr(message, "data", None))
+    if not isinstance(change, dict) or not isinstance(change.get("name"), str):
+        return None
+    root, value = not change["name"].strip("/"), change.get("value")
+    if change.get("op") == "set" and value is not None and (not root or isinstance(value, dict)):
+        return ParamChange(t_ns / 1e9, change["name"], value, calls_before)
+    if change.get("op") == "delete" and not root:
+        return ParamChange(t_ns / 1e9, change["name"], None, calls_before)
+    return None
 
 
 def _fields(message: Any) -> dict[str, Any]:

@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
-from grader.metrics.run import RunData, Trajectory, service_calls, turtle_poses
+from grader.metrics.run import RunData, Trajectory, param_changes, service_calls, turtle_poses
 from grader.report import SubmissionReport
 from grader.reports.canvas import canvas_figure
 from sim.scenario import TURTLESIM
@@ -86,7 +86,8 @@ def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = 90) -> li
     stop_s = shutdown_s(metadata)
     if turtlesim and path is not None and len(path.t):
         figure = canvas_figure(RunData(odometry=Trajectory.of(path.t, path.x, path.y, path.yaw),
-                                       poses=turtle_poses(recording), service_calls=service_calls(recording)))
+                                       poses=turtle_poses(recording), service_calls=service_calls(recording),
+                                       param_changes=param_changes(recording)))
         plots.append(Plot(task_id, scenario, "canvas", f"{task_id} ({scenario}): the turtlesim window at the end",
                           _png(figure, dpi)))
     if path is not None and len(path.t):

@@ -5,9 +5,9 @@ one line saying what was wrong; the node link makes that the node's ``protocol_v
 """
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, JsonValue, ValidationError, model_validator
 
 from grader.nodelib.common import rosgrade_channel as ch
 
@@ -98,9 +98,24 @@ class Call(_Frame):
     probe: bool
 
 
+class Param(_Frame):
+    """A change to the run's parameter server: ``set`` a value (a dict sets a namespace) or ``delete`` a name. The
+    value is what XML-RPC carries, so never null; its size and nesting are bounded by the frame's."""
+
+    op: Literal["set", "delete"]
+    name: Name
+    value: JsonValue = None
+
+    @model_validator(mode="after")
+    def _value_fits_op(self) -> Param:
+        if (self.op == ch.PARAM_SET) != (self.value is not None):
+            raise ValueError("a set needs a value that is not null, a delete takes none")
+        return self
+
+
 SCHEMAS: dict[int, type[_Frame]] = {
     ch.HELLO: Hello, ch.INIT: Init, ch.ADVERTISE: Register, ch.SUBSCRIBE: Register, ch.UNREGISTER: Unregister,
-    ch.LOG: Log, ch.EXCEPTION: ExceptionReport, ch.WAIT: Wait, ch.CALL: Call,
+    ch.LOG: Log, ch.EXCEPTION: ExceptionReport, ch.WAIT: Wait, ch.CALL: Call, ch.PARAM: Param,
 }
 
 

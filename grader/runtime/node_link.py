@@ -85,6 +85,14 @@ class ServiceReply:
     response: bytes = b""
 
 
+@dataclass(frozen=True)
+class ParamChange:
+    """A node set (``value``) or deleted (``value`` None) the parameter ``name`` (absolute) on the run's server."""
+
+    name: str
+    value: object = None
+
+
 @dataclass
 class LogLine:
     level: int
@@ -113,19 +121,26 @@ class NodeState:
     exception: dict | None = None  # the uncaught exception that ended the node, if any
     caught: list[dict] = field(default_factory=list)  # exceptions rospy printed and carried on from (callbacks, hooks)
     output_bytes: int = 0
+    param_bytes: int = 0  # what its PARAM frames carried, against MAX_PARAM_BYTES
     output_truncated: bool = False
     stderr_tail: deque = field(default_factory=lambda: deque(maxlen=4))  # last lines, for start-up failures
 
 
-_LOG_LEVELS = {1, 2, 4, 8, 16}
 # A node needs a handful of publishers and subscribers; past this many it is flooding the grader's memory and reports.
 MAX_ENDPOINTS = 1000
 # Bytes the grader holds for a node that is slow to read its batches; a node never legitimately needs more.
 MAX_PENDING_BYTES = 32 * 1024 * 1024
+# Bytes of parameter changes a node may send in one run (a node needs a few kilobytes): what other nodes are
+# forwarded in one BATCH header then stays under the channel's frame cap even when every other node hits it.
+MAX_PARAM_BYTES = 512 * 1024
 
 
 class EndpointLimitExceeded(Exception):
     """The node registered more publishers and subscribers than MAX_ENDPOINTS; it is stopped."""
+
+
+class ParamLimitExceeded(EndpointLimitExceeded):
+    """The node's parameter changes carried more than MAX_PARAM_BYTES; it is stopped (as for too many endpoints)."""
 
 
 def _topic(value: str, what: str = "topic") -> str:
@@ -255,9 +270,12 @@ class NodeLink:
         if kind == ch.INIT:
             self._init(frame, t_ns)
             return None
+        if kind == ch.PARAM:
+            return self._param(frame, len(payload))
         if kind == ch.LOG:
-            if frame.level not in _LOG_LEVELS:
-                raise ProtocolViolation(f"log level {frame.level} is not a rosgraph_msgs/Log level")
+            if frame.level not in self._catalog.log_levels:
+                raise ProtocolViolation(f"log level {frame.level} is not one of "
+                                        f"{', '.join(map(str, sorted(self._catalog.log_levels)))}")
             return LogLine(frame.level, frame.msg, frame.name or st.name or "", frame.file, frame.function,
                            frame.line)
         if kind == ch.EXCEPTION:
@@ -300,6 +318,19 @@ class NodeLink:
             except RecordingError as exc:
                 raise ProtocolViolation(f"request to {service} is not a valid {frame.type} request: {exc}") from None
         return ServiceCall(service, frame.type, frame.md5sum, frame.probe, request)
+
+    def _param(self, frame: frames.Param, size: int) -> ParamChange:
+        """A parameter change: an absolute name (the root only takes a namespace), within the node's byte budget."""
+        st = self.state
+        name = _topic(frame.name, "parameter")
+        if name.strip("/") == "" and frame.op == ch.PARAM_DELETE:
+            raise ProtocolViolation("PARAM delete of the root of the parameter tree, which cannot be deleted")
+        if name.strip("/") == "" and not isinstance(frame.value, dict):
+            raise ProtocolViolation("PARAM set of the root of the parameter tree to a value that is not a dict")
+        st.param_bytes += size
+        if st.param_bytes > MAX_PARAM_BYTES:
+            raise ParamLimitExceeded(f"changed parameters by more than {MAX_PARAM_BYTES} bytes; it was stopped")
+        return ParamChange(name, frame.value if frame.op == ch.PARAM_SET else None)
 
     def _init(self, frame: frames.Init, t_ns: int) -> None:
         """A node's name is fixed by its first init_node, and never one of the grader's own."""
@@ -361,12 +392,15 @@ class NodeLink:
         self._send(ch.encode_header_bytes(ch.REPLY, {"status": reply.status, "error": reply.error}, reply.response))
 
     def resume(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None,
-               connections: dict[int, int] | None = None) -> None:
-        """Send one BATCH frame: the new time (with changed connection counts per topic handle), messages for
-        the node's subscribers and maybe Ctrl+C; the node runs until its next WAIT."""
+               connections: dict[int, int] | None = None, params: list[tuple[str, object]] | None = None) -> None:
+        """Send one BATCH frame: the new time (with changed connection counts per topic handle, and the parameter
+        changes others made, in order), messages for the node's subscribers and maybe Ctrl+C; the node runs until
+        its next WAIT."""
         header: dict = {"t_ns": t_ns, "clock_ns": clock_ns}
         if connections:
             header["connections"] = {str(ident): count for ident, count in connections.items()}
+        if params:
+            header["params"] = [[name, value] for name, value in params]
         if shutdown is not None:
             header["shutdown"] = shutdown
         self._send(ch.encode_batch(header, deliveries))

@@ -24,8 +24,9 @@ from grader.recording import Recorder
 from grader.runtime import confine
 from grader.runtime.diagnostics import diagnose, topic_summary
 from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
-                                      NodeSilent, OutputLine, ProtocolViolation, Publication, ServiceCall,
+                                      NodeSilent, OutputLine, ParamChange, ProtocolViolation, Publication, ServiceCall,
                                       ServiceReply)
+from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
@@ -114,6 +115,7 @@ class Session:
         self._log_file = None
         self._node_logs: dict[int, TextIO] = {}  # output="log" nodes' own log files, by node index
         self._recorder: Recorder | None = None
+        self.params: ParamServer | None = None  # the run's parameter server, from the start of the recording
         self._next_usage_check = 0.0
 
     # -- public ------------------------------------------------------------------------------------------------
@@ -144,6 +146,7 @@ class Session:
                       catalog=self.catalog) as rec, \
                 open(self.log_path, "w", encoding="utf-8") as log_file:
             self._recorder, self._log_file = rec, log_file
+            self._start_parameters()
             try:
                 with timing.stage("node start-up", absorb=True):
                     for node in list(self.nodes):
@@ -186,12 +189,13 @@ class Session:
         link, node_spec = node.link, node.spec
         t = self.world.time_ns
         try:
-            link.handshake({"t_ns": t, "params": {"/use_sim_time": self.world.sim_clock, **node_spec.params},
+            link.handshake({"t_ns": t, "params": self._start_params(node_spec),
                             "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t),
                             "world_topics": sorted([topic, type_name] for topic, type_name in self.world_topics)})
         except (NodeExited, NodeSilent, ProtocolViolation) as exc:
             self._node_failed(node, exc, t)
             return
+        self.params.joined(self.nodes.index(node))
         self._step(node, t, first=True)
 
     def _stop(self, node: _Node, status: str, message: str) -> None:
@@ -327,7 +331,8 @@ class Session:
             if not first:
                 clock = (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if link.state.init_ns is not None else 0
                 deliveries, node.deliveries = node.deliveries, []
-                link.resume(t, clock, deliveries, shutdown, self._connection_changes(node, t))
+                link.resume(t, clock, deliveries, shutdown, self._connection_changes(node, t),
+                            self.params.take(self.nodes.index(node)))
             node.wake_ns = link.run_until_wait(t, lambda event: self._node_event(node, event, t))
         except (NodeExited, NodeSilent, ProtocolViolation, OutputLimitExceeded, EndpointLimitExceeded) as exc:
             self._node_failed(node, exc, t)
@@ -336,7 +341,12 @@ class Session:
     def _node_event(self, node: _Node, event: object, t: int) -> ServiceReply | None:
         if isinstance(event, ServiceCall):
             return self._service_call(node, event, t)
-        if isinstance(event, Publication):
+        if isinstance(event, ParamChange):
+            if event.value is None:
+                self.params.delete(event.name, self.nodes.index(node))
+            else:
+                self.params.set(event.name, event.value, self.nodes.index(node))
+        elif isinstance(event, Publication):
             self._publication(node, event.endpoint, event.data, t)
         elif isinstance(event, OutputLine):
             self._output(node, event, t)
@@ -350,6 +360,33 @@ class Session:
                                                sorted({e.topic for e in node.link.state.publishers.values()})),
                                  t, callerid=node.callerid, origin="node")
         return None
+
+    # -- the parameter server (grader/runtime/param_server.py) ----------------------------------------------------
+    def _start_parameters(self) -> None:
+        """The tree as the task sets it and the world's start makes it (turtlesim sets its defaults), recorded."""
+        self.params = ParamServer(initial_tree(self.world.sim_clock, [n.params for n in self.spec.nodes]),
+                                  self._record_param)
+        use = getattr(self.world, "use_parameters", None)
+        if use is not None:
+            use(self.params)
+        self.params.start()
+
+    def _start_params(self, node_spec: NodeSpec) -> dict:
+        """START's parameters: the server's tree for rospy; an rclpy node takes only its task's overrides."""
+        if self.wire.name == "ros2":
+            return {"/use_sim_time": self.world.sim_clock, **node_spec.params}
+        return {"/" + name: value for name, value in self.params.tree.items()}
+
+    def _record_param(self, text: str, author: int | str) -> None:
+        """One entry of /rosgrade/param, under whoever made the change (a node index, the world or the grader)."""
+        if author == WORLD:
+            callerid, origin = self.world.node_name, "world"
+        elif author == GRADER:
+            callerid, origin = "/rosgrade", "grader"
+        else:
+            callerid, origin = self.nodes[author].callerid, "node"
+        self._recorder.write(PARAM_TOPIC, self.wire.string_type, self.wire.string(text), self.world.time_ns,
+                             callerid=callerid, origin=origin)
 
     # -- service calls (answered by the world's server at the caller's time) -----------------------------------
     def _service_call(self, node: _Node, call: ServiceCall, t: int) -> ServiceReply:

@@ -73,7 +73,8 @@ def test_a_namespaced_turtlesim_is_reached_through_bridging_remaps():
     found = turtlesim.check_robot(launch, turtlesim.world_node(launch), "turtlesim")
     assert any("turtlesim.launch line 5: turtlesim_node runs as /sim/turtlesim" in n and "/sim/pose" in n
                for n in found)
-    assert any("/sim/turtlesim/background_r set on turtlesim_node are not modelled" in n for n in found)
+    assert any("runs as /turtlesim: it starts with /sim/turtlesim/background_r as its own parameters" in n
+               for n in found)
 
 
 def test_a_nodes_own_remap_onto_turtlesims_name_is_bridged_to_its_end(tmp_path):

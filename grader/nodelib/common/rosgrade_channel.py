@@ -9,7 +9,7 @@ import json
 import os
 import struct
 
-PROTOCOL = 3
+PROTOCOL = 4
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000
@@ -35,10 +35,15 @@ OUTPUT = 8
 EXCEPTION = 9
 WAIT = 10
 CALL = 11
+PARAM = 12
 # grader -> node
 START = 32
 BATCH = 33
 REPLY = 34
+
+# PARAM operations: a node set or deleted a parameter of the run's one parameter server.
+PARAM_SET = "set"
+PARAM_DELETE = "delete"
 
 # REPLY statuses: what became of a CALL (each client library words its own exception from them).
 SERVICE_OK = "ok"  # the response follows
@@ -50,11 +55,13 @@ SERVICE_STATUSES = frozenset({SERVICE_OK, SERVICE_UNAVAILABLE, SERVICE_REFUSED, 
 KIND_NAMES = {
     HELLO: "HELLO", INIT: "INIT", ADVERTISE: "ADVERTISE", SUBSCRIBE: "SUBSCRIBE", UNREGISTER: "UNREGISTER",
     PUBLISH: "PUBLISH", LOG: "LOG", OUTPUT: "OUTPUT", EXCEPTION: "EXCEPTION", WAIT: "WAIT", CALL: "CALL",
+    PARAM: "PARAM",
     START: "START", BATCH: "BATCH", REPLY: "REPLY",
 }
-NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT, CALL})
+NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT, CALL,
+                        PARAM})
 GRADER_KINDS = frozenset({START, BATCH, REPLY})
-JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT, START})
+JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT, START, PARAM})
 
 _HEADER = struct.Struct("<IB")
 _ID = struct.Struct("<I")
@@ -99,7 +106,8 @@ def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:
     end = 4 + _ID.unpack_from(payload)[0]
     if end > len(payload):
         raise ChannelError("BATCH header runs past the end of the frame")
-    header = decode_json(payload[4:end])
+    # The header may carry other nodes' parameter changes: bounded by the frame, not by MAX_JSON_BYTES.
+    header = decode_json(payload[4:end], limit=MAX_FRAME_BYTES)
     deliveries = []
     while end < len(payload):
         if end + 8 > len(payload):
@@ -144,10 +152,10 @@ def split_output(payload: bytes) -> tuple[int, bytes]:
     return payload[0], payload[1:]
 
 
-def decode_json(payload: bytes) -> dict:
+def decode_json(payload: bytes, limit: int = MAX_JSON_BYTES) -> dict:
     """Parse a JSON payload strictly: size-capped, must be an object."""
-    if len(payload) > MAX_JSON_BYTES:
-        raise ChannelError(f"JSON frame of {len(payload)} bytes exceeds {MAX_JSON_BYTES}")
+    if len(payload) > limit:
+        raise ChannelError(f"JSON frame of {len(payload)} bytes exceeds {limit}")
     try:
         obj = json.loads(payload.decode("utf-8"))
     except (UnicodeDecodeError, ValueError, RecursionError) as exc:

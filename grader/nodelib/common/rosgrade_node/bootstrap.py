@@ -7,6 +7,7 @@ import signal
 import sys
 
 import rosgrade_channel as ch
+import rosgrade_params
 
 from . import excepthook, pids, realtime, runtime, streams, threads, timepatch
 from .link import Link
@@ -40,6 +41,12 @@ def start(channel: str) -> None:
     runtime.link = link
     runtime.scheduler = Scheduler(link, t_ns)
     runtime.params = params
+    runtime.param_tree = runtime.scheduler.param_tree
+    try:
+        for name, value in params.items():
+            rosgrade_params.set_value(runtime.param_tree, "/" + name.lstrip("/"), value)
+    except TypeError as exc:
+        raise BootstrapError(f"START params cannot make a parameter tree: {exc}") from None
     runtime.wall_epoch_ns = round(wall_epoch * 1e9)
     runtime.ros_namespace = str(start_msg.get("ros_namespace") or "")
     runtime.world_topics = [tuple(pair) for pair in start_msg.get("world_topics") or ()

@@ -21,6 +21,8 @@ class Batch:
     deliveries: list[tuple[int, bytes]] = field(default_factory=list)
     shutdown: str | None = None
     connections: dict[int, int] = field(default_factory=dict)  # changed connection counts per topic handle
+    # Parameter changes other nodes (or the world) made since the last batch, in order: [name, value (None: deleted)].
+    params: list[tuple[str, object]] = field(default_factory=list)
 
 
 class Link:
@@ -69,13 +71,15 @@ class Link:
             _fail(exc)
 
     def read_batch(self) -> Batch:
-        """Read one BATCH: the new time, changed connection counts, deliveries and maybe a shutdown request."""
+        """Read one BATCH: the new time, changed connection counts and parameters, deliveries and maybe a shutdown
+        request."""
         try:
             header, deliveries = ch.decode_batch(self._read(ch.BATCH))
             shutdown = header.get("shutdown")
             return Batch(t_ns=_int(header, "t_ns"), clock_ns=_int(header, "clock_ns"), deliveries=deliveries,
                          shutdown=None if shutdown is None else str(shutdown),
-                         connections=_counts(header.get("connections") or {}))
+                         connections=_counts(header.get("connections") or {}),
+                         params=_changes(header.get("params") or []))
         except (ch.ChannelError, OSError) as exc:
             _fail(exc)
 
@@ -104,6 +108,13 @@ def _counts(obj) -> dict[int, int]:
         return {int(ident): _int(obj, ident) for ident in obj}
     except ValueError:
         raise ch.ChannelError("BATCH connections must map topic handles to counts") from None
+
+
+def _changes(obj) -> list[tuple[str, object]]:
+    if not isinstance(obj, list) or not all(isinstance(c, list) and len(c) == 2 and isinstance(c[0], str)
+                                            for c in obj):
+        raise ch.ChannelError("BATCH params must be a list of [name, value] pairs")
+    return [(name, value) for name, value in obj]
 
 
 def _int(obj: dict, key: str) -> int:

@@ -8,6 +8,9 @@ link: Link | None = None
 scheduler: Scheduler | None = None
 # From START: parameters (absolute names -> JSON values), namespace and the wall-clock epoch of world time 0.
 params: dict = {}
+# The run's parameter server as a tree (rosgrade_params), START's parameters kept up to date by every batch: the
+# scheduler's ``param_tree``. ROS 1 client libraries read and write it; ``params`` stays START's, as it came.
+param_tree: dict = {}
 ros_namespace: str = ""
 wall_epoch_ns: int = 0
 world_topics: list = []  # [topic, type] pairs the world publishes (for rospy.get_published_topics)

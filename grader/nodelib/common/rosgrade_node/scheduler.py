@@ -19,6 +19,7 @@ from collections import deque
 from collections.abc import Callable
 
 import rosgrade_channel as ch
+import rosgrade_params
 
 from .link import Link
 
@@ -79,6 +80,9 @@ class Scheduler:
         self._sinks: dict[int, Callable[[bytes], _Waiter | None]] = {}
         # Topic handle -> how many nodes it is connected to, as the grader last said (get_num_connections()).
         self.connections: dict[int, int] = {}
+        # The run's parameter server as this node sees it (bootstrap fills it from START; batches bring the changes
+        # other nodes made, applied before any thread runs, so every thread reads the same tree at one world time).
+        self.param_tree: dict = {}
         # Threads started outside the token (from a thread the scheduler does not manage) wait here.
         self._outside = threading.Condition()
         self.adopted: list[_Waiter] = []  # student threads, in start order
@@ -271,6 +275,7 @@ class Scheduler:
             self.charge_ns = 0
         self.world_ns, self.clock_ns = batch.t_ns, batch.clock_ns
         self.connections.update(batch.connections)
+        rosgrade_params.apply(self.param_tree, batch.params)
         woken: dict[_Waiter, None] = {}
         for ident, data in batch.deliveries:
             sink = self._sinks.get(ident)

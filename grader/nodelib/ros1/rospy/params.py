@@ -1,4 +1,4 @@
-"""The node's parameter server: START's parameters plus ``_private:=value`` arguments, as a namespace tree."""
+"""rospy's parameter calls on the run's one parameter server: read locally, changes sent to the grader."""
 from __future__ import annotations
 
 import copy
@@ -6,11 +6,15 @@ import json
 import re
 import xmlrpc.client
 
+import rosgrade_channel as ch
+import rosgrade_params
 from rosgrade_node import runtime
 
 from . import names
 
-_root: dict = {}
+# The run's parameter server as this node sees it: bootstrap built it from START, every batch brings the changes
+# other nodes made (rosgrade_node.scheduler), this node's own changes are made here and sent on.
+_root: dict = runtime.param_tree
 
 # YAML 1.1 scalars as PyYAML's safe_load reads them (what rospy uses for ``_param:=value``).
 _NULL = re.compile(r"^(?:~|null|Null|NULL|)$")
@@ -56,48 +60,40 @@ def parse_scalar(text: str):
     return s
 
 
-def _parts(resolved: str) -> list[str]:
-    return [p for p in resolved.split(names.SEP) if p]
-
-
-def load(params: dict) -> None:
-    """START's parameters: absolute names (or nested dicts under '/') to JSON values."""
-    for key, value in params.items():
-        set_param(names.make_global_ns(key)[:-1] if key.strip("/") else "/", value)
-
-
 def _as_master_stores(value):
     """The value as it comes back from rosmaster: sent over XML-RPC, so a tuple reads back as a list and None or
     an object XML-RPC cannot carry raises its TypeError."""
     return xmlrpc.client.loads(xmlrpc.client.dumps((value,)))[0][0]
 
 
-def set_param(param_name: str, param_value) -> None:
-    """Set a parameter; a dict value sets a whole namespace."""
-    param_value = _as_master_stores(param_value)
-    parts = _parts(names.resolve_name(param_name))
-    if not parts:
-        if not isinstance(param_value, dict):
-            raise TypeError("cannot set root of parameter tree to non-dictionary")
-        _root.clear()
-        _root.update(param_value)
+def _tell_grader(op: str, name: str, value=None) -> None:
+    """Send the change to the run's parameter server (the grader), which passes it on to the other nodes.
+
+    XML-RPC values JSON cannot carry (Binary, DateTime) or a value past the frame's size stay in this node only."""
+    if runtime.link is None:
         return
-    node = _root
-    for part in parts[:-1]:
-        child = node.get(part)
-        if not isinstance(child, dict):
-            child = node[part] = {}
-        node = child
-    node[parts[-1]] = param_value
+    frame = {"op": op, "name": name} if op == ch.PARAM_DELETE else {"op": op, "name": name, "value": value}
+    try:
+        encoded = ch.encode_json(ch.PARAM, frame)
+    except (TypeError, ValueError):
+        return
+    if len(encoded) - 5 <= ch.MAX_JSON_BYTES and len(name) <= ch.MAX_NAME_CHARS:
+        runtime.link.send(encoded)
+
+
+def set_param(param_name: str, param_value) -> None:
+    """Set a parameter on the run's parameter server; a dict value sets a whole namespace."""
+    param_value = _as_master_stores(param_value)
+    resolved = names.resolve_name(param_name)
+    rosgrade_params.set_value(_root, resolved, param_value)
+    _tell_grader(ch.PARAM_SET, resolved, param_value)
 
 
 def _lookup(param_name: str):
-    node = _root
-    for part in _parts(names.resolve_name(param_name)):
-        if not isinstance(node, dict) or part not in node:
-            raise KeyError(param_name)
-        node = node[part]
-    return node
+    try:
+        return rosgrade_params.lookup(_root, names.resolve_name(param_name))
+    except KeyError:
+        raise KeyError(param_name) from None
 
 
 _unspecified = object()
@@ -122,13 +118,13 @@ def has_param(param_name: str) -> bool:
 
 
 def delete_param(param_name: str) -> None:
-    parts = _parts(names.resolve_name(param_name))
-    if not parts:
-        raise KeyError(param_name)
-    parent = _lookup(names.SEP + names.SEP.join(parts[:-1])) if len(parts) > 1 else _root
-    if not isinstance(parent, dict) or parts[-1] not in parent:
-        raise KeyError(param_name)
-    del parent[parts[-1]]
+    """Delete a parameter or a whole namespace; KeyError(param_name) when there is none."""
+    resolved = names.resolve_name(param_name)
+    try:
+        rosgrade_params.delete(_root, resolved)
+    except KeyError:
+        raise KeyError(param_name) from None
+    _tell_grader(ch.PARAM_DELETE, resolved)
 
 
 def search_param(param_name: str) -> str | None:
@@ -162,10 +158,9 @@ def get_param_names() -> list[str]:
 
 
 def load_start_parameters() -> None:
-    """The parameter server as the grader started it (readable before init_node, as rosmaster's is)."""
-    load(runtime.params)
+    """Make the shared tree this module's root (readable before init_node, as rosmaster's is)."""
     if not has_param("/use_sim_time"):
-        set_param("/use_sim_time", True)
+        rosgrade_params.set_value(_root, "/use_sim_time", True)  # this node's default, not the server's
 
 
 load_start_parameters()
