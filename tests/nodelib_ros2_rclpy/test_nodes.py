@@ -180,3 +180,64 @@ def test_tf2_listener_fills_the_buffer_while_spinning():
 def test_runs_are_deterministic():
     from tests.nodelib.fake_grader import frames_as_json
     assert frames_as_json(circle("default")) == frames_as_json(circle("default"))
+
+
+@pytest.fixture(scope="module")
+def edge_run():
+    return Ros2Grader("edge_probe.py", args=list(SIM), end_ns=6_000_000_000).run()
+
+
+def test_sleep_for_on_sim_time_wakes_at_the_tick_a_spinning_thread_applies(edge_run):
+    # the spinner would otherwise sleep until the end of the run (no timer, no message wakes it)
+    assert "sleep_for True 300000000" in edge_run.lines()
+
+
+def test_clock_type_prints_as_rclpys_pybind11_enum(edge_run):
+    assert "clock type ClockType.ROS_TIME ClockType.ROS_TIME" in edge_run.lines()
+
+
+@pytest.mark.parametrize("line", [
+    "second type publisher: rclpy._rclpy_pybind11.RCLError: Failed to create publisher: create_publisher() called "
+    "for existing topic name rt/cmd_vel with incompatible type geometry_msgs::msg::dds_::Twist_, at "
+    "/project/src/publisher.cpp:145, at /project/src/rcl/publisher.c:118",
+    "second type subscription: rclpy._rclpy_pybind11.RCLError: Failed to create subscription: create_subscription() "
+    "called for existing topic name rt/cmd_vel with incompatible type geometry_msgs::msg::dds_::Twist_, at "
+    "/project/src/subscription.cpp:526, at /project/src/rcl/subscription.c:116",
+    "same type again: '/cmd_vel'",
+    "other type once the topic is free: '/cmd_vel'",
+])
+def test_one_type_per_topic_in_a_context(edge_run, line):
+    assert line in edge_run.lines()
+
+
+@pytest.mark.parametrize("topic", ["rosout", "clock"])
+def test_the_nodes_own_topics_take_their_type(edge_run, topic):
+    assert any(line.startswith(f"String on /{topic}: ") and f"topic name rt/{topic} with incompatible type "
+               "std_msgs::msg::dds_::String_" in line for line in edge_run.lines())
+
+
+@pytest.mark.parametrize("line", [
+    "int type: builtins.AttributeError: type object 'int' has no attribute '_TYPE_SUPPORT' This might be a ROS 1 "
+    "message type but it should be a ROS 2 message type. Make sure to source your ROS 2 workspace after your ROS 1 "
+    "workspace.",
+    "service as message: builtins.RuntimeError: The message type provided is not valid "
+    "(<class 'std_srvs.srv._empty.Empty'>), this might be a service or action",
+    "message as service: builtins.RuntimeError: The service type provided is not valid "
+    "(<class 'std_msgs.msg._string.String'>), this might be a message or action",
+])
+def test_classes_without_type_support_fail_as_in_rclpy(edge_run, line):
+    assert line in edge_run.lines()
+
+
+def test_bad_node_name_warns_once_about_the_rosout_publisher(edge_run):
+    err = edge_run.output(2)
+    warning = ("RuntimeWarning: Failed to fini rosout publisher: rcl node implementation is invalid, at "
+               "/project/src/rcl/node.c:387")
+    assert err.count(warning) == 1 and "node.py:" in err.split(warning)[0]
+
+
+def test_create_timer_after_shutdown_is_an_rcl_error_of_the_context(edge_run):
+    assert edge_run.lines()[-1] == (
+        "timer after shutdown: rclpy._rclpy_pybind11.RCLError: failed to create timer: the given context is not "
+        "valid, either rcl_init() was not called or rcl_shutdown() was called., at "
+        "/project/src/rcl/guard_condition.c:65")

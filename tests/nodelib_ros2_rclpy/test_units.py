@@ -115,3 +115,23 @@ def test_tf_transformations_is_ros1_math():
     q = tft.quaternion_from_euler(0.0, 0.0, 1.0)
     assert abs(tft.euler_from_quaternion(q)[2] - 1.0) < 1e-12
     assert tft.quaternion_from_euler.__module__ == "rosgrade_transformations"
+
+
+def test_clock_type_text_is_the_pybind11_enums():
+    assert str(ClockType.ROS_TIME) == f"{ClockType.ROS_TIME}" == "ClockType.ROS_TIME"
+    assert repr(ClockType.SYSTEM_TIME) == "<ClockType.SYSTEM_TIME: 2>" and ClockType.ROS_TIME == 1
+    with pytest.raises(TypeError, match="unsupported format string"):
+        f"{ClockType.ROS_TIME:d}"
+
+
+def test_log_of_a_non_str_is_pybind11s_type_error():
+    with pytest.raises(TypeError) as info:
+        RcutilsLogger("unit").info(123)
+    assert ("1. (arg0: typing.SupportsInt, arg1: str, arg2: str, arg3: str, arg4: str, arg5: typing.SupportsInt) "
+            "-> None\n\nInvoked with: <LoggingSeverity.INFO: 20>, 'unit', 123, ") in str(info.value)
+
+
+def test_dds_type_names():
+    from rclpy._graph import dds_type_name
+    assert dds_type_name("geometry_msgs/msg/Twist") == "geometry_msgs::msg::dds_::Twist_"
+    assert dds_type_name("std_srvs/srv/Empty_Request") == "std_srvs::srv::dds_::Empty_Request_"

@@ -15,11 +15,21 @@ import rosgrade_channel as ch
 from rosgrade_node import runtime
 
 from . import _runtime
+from ._rclpy_pybind11 import RCLError
 
 _handle_ids = itertools.count(1)
 _init_sent = False
 # Open endpoints: handle -> (kind "pub"/"sub", topic, type name), for the graph queries.
 endpoints: dict[int, tuple[str, str, str]] = {}
+# Open endpoints: handle -> the context (one DDS participant each) it was created in.
+_contexts: dict[int, object] = {}
+# rmw_fastrtps' refusal of a second type on a topic name within one participant, as real rclpy raises it.
+_INCOMPATIBLE = {
+    "pub": "Failed to create publisher: create_publisher() called for existing topic name {topic} with incompatible "
+           "type {type}, at /project/src/publisher.cpp:145, at /project/src/rcl/publisher.c:118",
+    "sub": "Failed to create subscription: create_subscription() called for existing topic name {topic} with "
+           "incompatible type {type}, at /project/src/subscription.cpp:526, at /project/src/rcl/subscription.c:116",
+}
 
 
 def type_of(msg_type) -> tuple[str, str]:
@@ -40,10 +50,27 @@ def send_init(fq_name: str, log_level: int, disable_signals: bool) -> None:
     sched.node_initialized = True
 
 
-def register(kind: str, topic: str, msg_type, depth: int | None, latch: bool) -> int:
-    """ADVERTISE ("pub") or SUBSCRIBE ("sub"); returns the handle."""
+def dds_type_name(type_name: str) -> str:
+    """'geometry_msgs/msg/Twist' -> 'geometry_msgs::msg::dds_::Twist_' (the DDS type rmw registers)."""
+    *scope, name = type_name.split("/")
+    return "::".join([*scope, "dds_", name + "_"])
+
+
+def check_topic_type(kind: str, topic: str, msg_type, context, builtin: list[tuple[str, str]]) -> None:
+    """RCLError when ``topic`` already carries another type in ``context``: an open endpoint of it, or one of the
+    endpoints its nodes make themselves (``builtin``: /rosout, /parameter_events, /clock under sim time)."""
+    name, _ = type_of(msg_type)
+    types = [t for h, (_, tp, t) in endpoints.items() if tp == topic and _contexts.get(h) is context]
+    types += [t for tp, t in builtin if tp == topic]
+    if any(t != name for t in types):
+        raise RCLError(_INCOMPATIBLE[kind].format(topic="rt" + topic, type=dds_type_name(name)))
+
+
+def register(kind: str, topic: str, msg_type, depth: int | None, latch: bool, context=None) -> int:
+    """ADVERTISE ("pub") or SUBSCRIBE ("sub") in ``context``; returns the handle."""
     name, type_hash = type_of(msg_type)
     handle = next(_handle_ids)
+    _contexts[handle] = context
     _runtime.link().send_json(ch.ADVERTISE if kind == "pub" else ch.SUBSCRIBE, {
         "id": handle, "topic": topic, "type": name, "md5sum": type_hash,
         "queue_size": depth if depth is not None else 0, "latch": latch})
@@ -52,6 +79,7 @@ def register(kind: str, topic: str, msg_type, depth: int | None, latch: bool) ->
 
 
 def unregister(handle: int) -> None:
+    _contexts.pop(handle, None)
     if endpoints.pop(handle, None) is not None and runtime.link is not None:
         runtime.link.send_json(ch.UNREGISTER, {"id": handle})
         if runtime.scheduler is not None:

@@ -26,4 +26,6 @@ class SignalHandlerOptions(IntEnum):
 PUBLISHER_CONTEXT_INVALID = "publisher's context is invalid, at /project/src/rcl/publisher.c:427"
 CONTEXT_INVALID = ("the given context is not valid, either rcl_init() was not called or rcl_shutdown() was called., "
                    "at /project/src/rcl/guard_condition.c:65")
+ROSOUT_FINI_FAILED = ("Failed to fini rosout publisher: rcl node implementation is invalid, "
+                      "at /project/src/rcl/node.c:387")
 DESTROYED = "cannot use Destroyable because destruction was requested"

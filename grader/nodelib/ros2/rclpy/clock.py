@@ -9,6 +9,15 @@ from .duration import Duration
 from .time import Time
 
 
+# Counts sleep_until calls: an executor blocked before a sleep began wakes to include the sleep's target in its
+# wake time (real rclpy's executor takes every /clock message; ours wakes only for the ticks something waits on).
+_sleep_epoch = 0
+
+
+def sleep_epoch() -> int:
+    return _sleep_epoch
+
+
 class ClockChange(IntEnum):
     ROS_TIME_NO_CHANGE = 1
     ROS_TIME_ACTIVATED = 2
@@ -86,6 +95,7 @@ class Clock:
         self._jump_handles = []
         self._ros_time_active = False
         self._ros_time_ns = 0
+        self._sleep_targets: list[int] = []  # ``until`` of each thread in sleep_until
         return self
 
     @property
@@ -112,30 +122,41 @@ class Clock:
         return JumpHandle(clock=self, threshold=threshold, pre_callback=pre_callback, post_callback=post_callback)
 
     def sleep_until(self, until: Time, context=None) -> bool:
-        """Block until this clock reaches ``until``; False when the context shut down first.
+        """Block until this clock reaches ``until``: True when it did, False when the context shut down or ROS time
+        was activated or deactivated first.
 
         A ROS clock on sim time only moves while an executor spins its node (as in real rclpy: nobody spinning
-        means it never wakes)."""
+        means it never wakes); the spinning executor wakes at the /clock tick that reaches ``until``."""
+        global _sleep_epoch
         from .exceptions import NotInitializedException
         from .utilities import get_default_context
         context = get_default_context() if context is None else context
-        if until.clock_type != self._clock_type:
-            raise TypeError("until's clock type does not match this clock's type")
         if not context.ok():
             raise NotInitializedException()
+        if until.clock_type != self._clock_type:
+            raise ValueError("until's clock type does not match this clock's type")
         sched = _runtime.scheduler()
+        ros_time_was_active = self._ros_time_active
 
-        def reached() -> bool:
-            return self._now_ns() >= until.nanoseconds or not context.ok()
+        def woken() -> bool:
+            return (self._now_ns() >= until.nanoseconds or not context.ok()
+                    or self._ros_time_active != ros_time_was_active)
 
-        while not reached():
-            deadline = None
-            if self._clock_type is ClockType.STEADY_TIME:
-                deadline = until.nanoseconds - _runtime.STEADY_OFFSET_NS
-            elif not self._ros_time_active:
-                deadline = until.nanoseconds - (_runtime.system_ns() - _runtime.world_ns())
-            sched.block(deadline_ns=deadline, ready=reached)
-        return context.ok()
+        self._sleep_targets.append(until.nanoseconds)
+        _sleep_epoch += 1
+        try:
+            while not woken():
+                deadline = None
+                if self._clock_type is ClockType.STEADY_TIME:
+                    deadline = until.nanoseconds - _runtime.STEADY_OFFSET_NS
+                elif not self._ros_time_active:
+                    deadline = until.nanoseconds - (_runtime.system_ns() - _runtime.world_ns())
+                sched.block(deadline_ns=deadline, ready=woken)
+        finally:
+            self._sleep_targets.remove(until.nanoseconds)
+        if not context.ok() or self._ros_time_active != ros_time_was_active:
+            return False
+        return self.now() >= until
 
     def sleep_for(self, rel_time: Duration, context=None) -> bool:
         return self.sleep_until(self.now() + rel_time, context)

@@ -16,6 +16,7 @@ import warnings
 from collections import deque
 
 from . import _runtime
+from .clock import sleep_epoch
 from .task import Task
 from .utilities import get_default_context, timeout_sec_to_nsec
 
@@ -161,8 +162,11 @@ class Executor:
         wakes = [] if deadline_ns is None else [deadline_ns]
         for node in self._nodes:
             wakes += [w for t in node._timers if self.can_execute(t) and (w := t.wake_world_ns()) is not None]
-            if clock_is_work and node._time_source.ros_time_is_active:
+            source = node._time_source
+            if clock_is_work and source.ros_time_is_active:
                 wakes.append(_runtime.clock_wake_ns(0))
+            elif not clock_is_work and (target := source.first_sleep_target()) is not None:
+                wakes.append(_runtime.clock_wake_ns(target))  # spin() applies the /clock a sleeper waits for
         return min(wakes) if wakes else None
 
     def wait_for_ready_callbacks(self, timeout_sec=None, nodes=None, condition=_never, clock_is_work: bool = True):
@@ -197,8 +201,9 @@ class Executor:
         raise ConditionReachedException()
 
     def _block(self, sched, wake_ns: int | None, condition) -> None:
+        epoch = sleep_epoch()  # a sleep that begins meanwhile may need an earlier wake: wake to recompute it
         try:
-            sched.block(deadline_ns=wake_ns, ready=lambda: self._anything_ready(condition))
+            sched.block(deadline_ns=wake_ns, ready=lambda: self._anything_ready(condition) or sleep_epoch() != epoch)
         except KeyboardInterrupt as exc:
             if type(exc) is not KeyboardInterrupt:
                 raise

@@ -7,13 +7,14 @@ import weakref
 from rosgrade_node import runtime
 
 from . import _graph, _runtime, names, signals
-from ._rclpy_pybind11 import CONTEXT_INVALID, DESTROYED, InvalidHandle, RCLError, SignalHandlerOptions
+from ._rclpy_pybind11 import (CONTEXT_INVALID, DESTROYED, ROSOUT_FINI_FAILED, InvalidHandle, RCLError,
+                              SignalHandlerOptions)
 from .callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from .client import Client
 from .clock import Clock, ROSClock
-from .exceptions import (InvalidParameterTypeException, InvalidParameterValueException, NotInitializedException,
-                         ParameterAlreadyDeclaredException, ParameterImmutableException,
-                         ParameterNotDeclaredException, ParameterUninitializedException)
+from .exceptions import (InvalidNamespaceException, InvalidNodeNameException, InvalidParameterTypeException,
+                         InvalidParameterValueException, NotInitializedException, ParameterAlreadyDeclaredException,
+                         ParameterImmutableException, ParameterNotDeclaredException, ParameterUninitializedException)
 from .guard_condition import GuardCondition
 from .impl import rcutils_logger
 from .logging import get_logger
@@ -24,6 +25,7 @@ from .service import Service
 from .subscription import Subscription
 from .time_source import TimeSource
 from .timer import Rate, Timer
+from .type_support import check_is_valid_msg_type, check_is_valid_srv_type
 from .utilities import get_default_context
 
 PARAMETER_SEPARATOR_STRING = "."
@@ -72,12 +74,17 @@ class Node:
         ros_args = self._context.ros_args if use_global_arguments else arguments.RosArgs()
         local = arguments.parse(["--ros-args", *cli_args]) if cli_args else arguments.RosArgs()
         self._remaps = local.remaps + ros_args.remaps
-        names.validate_node_name(node_name)
-        namespace = namespace or runtime.ros_namespace or ""
-        node_name, namespace = self._remapped_identity(node_name, namespace)
-        if not namespace.startswith("/"):
-            namespace = "/" + namespace
-        names.validate_namespace(namespace)
+        try:
+            names.validate_node_name(node_name)
+            namespace = namespace or runtime.ros_namespace or ""
+            node_name, namespace = self._remapped_identity(node_name, namespace)
+            if not namespace.startswith("/"):
+                namespace = "/" + namespace
+            names.validate_namespace(namespace)
+        except (InvalidNodeNameException, InvalidNamespaceException):
+            # rcl_node_init's cleanup after a bad name fails on the half-made node; rclpy turns that into a warning
+            warnings.warn(ROSOUT_FINI_FAILED, RuntimeWarning, stacklevel=1)
+            raise
         self._name, self._namespace = node_name, namespace
         self._logger = get_logger(names.logger_name(node_name, namespace))
         for args in (ros_args, local):
@@ -228,6 +235,21 @@ class Node:
         if not self._context.ok():
             raise RCLError(f"failed to create {what}: " + CONTEXT_INVALID)
 
+    def _builtin_topics(self) -> list[tuple[str, str]]:
+        """The endpoints rclpy makes for the node itself: /parameter_events, /rosout, /clock under sim time."""
+        topics = [_ALWAYS_TOPICS[0]]
+        if rcutils_logger.rosout_nodes.get(self._logger.name) is self:
+            topics.append(_ALWAYS_TOPICS[1])
+        if self._time_source.ros_time_is_active:
+            topics.append(("/clock", "rosgraph_msgs/msg/Clock"))
+        return topics
+
+    def _check_topic_type(self, kind: str, topic: str, msg_type) -> None:
+        """One type per topic name in a context (rmw's rule), counting the built-in endpoints of its live nodes."""
+        nodes = [ref() for ref in self._context._nodes]
+        builtin = [entry for node in nodes if node is not None for entry in node._builtin_topics()]
+        _graph.check_topic_type(kind, topic, msg_type, self._context, builtin)
+
     @staticmethod
     def _validate_qos_or_depth_parameter(qos_or_depth) -> QoSProfile:
         if isinstance(qos_or_depth, QoSProfile):
@@ -244,8 +266,10 @@ class Node:
         qos_profile = self._validate_qos_or_depth_parameter(qos_profile)
         callback_group = callback_group or self._default_callback_group
         resolved = self.resolve_topic_name(topic)
+        check_is_valid_msg_type(msg_type)
         self._check_usable("publisher")
         _runtime.charge()
+        self._check_topic_type("pub", resolved, msg_type)
         publisher = publisher_class(self, msg_type, resolved, qos_profile, callback_group)
         self._publishers.append(publisher)
         self._wake_executor()
@@ -256,8 +280,10 @@ class Node:
         qos_profile = self._validate_qos_or_depth_parameter(qos_profile)
         callback_group = callback_group or self._default_callback_group
         resolved = self.resolve_topic_name(topic)
+        check_is_valid_msg_type(msg_type)
         self._check_usable("subscription")
         _runtime.charge()
+        self._check_topic_type("sub", resolved, msg_type)
         subscription = Subscription(self, msg_type, resolved, callback, callback_group, qos_profile, raw)
         callback_group.add_entity(subscription)
         self._subscriptions.append(subscription)
@@ -267,6 +293,7 @@ class Node:
     def create_client(self, srv_type, srv_name: str, *, qos_profile=qos_profile_services_default,
                       callback_group=None) -> Client:
         callback_group = callback_group or self._default_callback_group
+        check_is_valid_srv_type(srv_type)
         resolved = self.resolve_service_name(srv_name)
         self._check_usable("client")
         client = Client(self, srv_type, resolved, qos_profile, callback_group)
@@ -278,6 +305,7 @@ class Node:
     def create_service(self, srv_type, srv_name: str, callback, *, qos_profile=qos_profile_services_default,
                        callback_group=None) -> Service:
         callback_group = callback_group or self._default_callback_group
+        check_is_valid_srv_type(srv_type)
         resolved = self.resolve_service_name(srv_name)
         self._check_usable("service")
         service = Service(self, srv_type, resolved, callback, callback_group, qos_profile)
@@ -289,8 +317,7 @@ class Node:
                      autostart: bool = True) -> Timer:
         timer_period_nsec = int(float(timer_period_sec) * 1e9)
         callback_group = callback_group or self._default_callback_group
-        if self._destroyed:
-            raise InvalidHandle(DESTROYED)
+        # no node handle check: real rclpy builds a timer from the context and clock alone (a destroyed node's works)
         timer = Timer(callback, callback_group, timer_period_nsec, clock or self._clock, context=self._context,
                       autostart=autostart)
         callback_group.add_entity(timer)

@@ -21,7 +21,7 @@ class Publisher:
         self.event_handlers: list = []
         self._handle: int | None = _graph.register(
             "pub", topic, msg_type, qos_profile.keeps(),
-            qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL)
+            qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL, node.context)
 
     def _check_handle(self) -> int:
         if self._handle is None:

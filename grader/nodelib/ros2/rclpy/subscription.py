@@ -36,7 +36,8 @@ class Subscription:
         self._keep = qos_profile.keeps()
         self._queue: deque[tuple[bytes, int]] = deque()
         self._handle: int | None = _graph.register(
-            "sub", topic, msg_type, self._keep, qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL)
+            "sub", topic, msg_type, self._keep, qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL,
+            node.context)
         _runtime.scheduler().add_sink(self._handle, self._push)
 
     def _push(self, data: bytes):

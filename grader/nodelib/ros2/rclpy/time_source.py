@@ -74,6 +74,12 @@ class TimeSource:
         """A /clock value newer than the one applied is waiting (the /clock subscription is ready)."""
         return self._ros_time_is_active and _runtime.clock_msg_ns() != self._applied_ns
 
+    def first_sleep_target(self) -> int | None:
+        """The earliest ROS time a thread sleeps until on one of the node's clocks (None: nobody sleeps on sim time)."""
+        if not self._ros_time_is_active:
+            return None
+        return min((t for clock in self._clocks for t in clock._sleep_targets), default=None)
+
     def apply_clock(self) -> None:
         """The /clock subscription's callback: the node's ROS clocks take the grader's latest /clock."""
         ns = _runtime.clock_msg_ns()

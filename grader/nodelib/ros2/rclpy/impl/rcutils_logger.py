@@ -73,7 +73,8 @@ def rcutils_log(severity: int, name: str, message, function: str, file: str, lin
     if not isinstance(message, str):
         raise TypeError(
             "rclpy_logging_rcutils_log(): incompatible function arguments. The following argument types are "
-            "supported:\n    1. (arg0: int, arg1: str, arg2: str, arg3: str, arg4: str, arg5: int) -> None\n\n"
+            "supported:\n    1. (arg0: typing.SupportsInt, arg1: str, arg2: str, arg3: str, arg4: str, "
+            "arg5: typing.SupportsInt) -> None\n\n"
             f"Invoked with: {LoggingSeverity(severity)!r}, {name!r}, {message!r}, {function!r}, {file!r}, {line}")
     sys.stderr.write(_console_line(severity, name, message, function, file, line))
     node = _rosout_node(name)
