@@ -12,6 +12,7 @@ from mcap.writer import CompressionType, Writer
 
 from grader import __version__
 from grader.recording.errors import RecordingError
+from grader.recording.fast_messages import MessageAppender
 from grader.recording.messages import MessageCatalog, default_catalog
 from grader.recording.ros2_messages import Ros2Catalog
 
@@ -105,6 +106,7 @@ class Recorder:
         except OSError as exc:
             raise RecordingError(f"cannot create recording {self._path}: {exc.strerror or exc}") from None
         self._writer = Writer(self._file, chunk_size=self._chunk_size, compression=CompressionType.ZSTD)
+        self._appender = MessageAppender(self._writer)
         self._writer.start(profile=self._catalog.profile, library=f"rosgrade {__version__}")
         for name, values in self._initial_metadata.items():
             self._writer.add_metadata(name, values)
@@ -149,9 +151,7 @@ class Recorder:
         elif channel.type_name != type_name and self._catalog.canonical(type_name) != channel.type_name:
             raise RecordingError(f"{callerid} wrote {type_name} on {topic}, which it recorded as {channel.type_name}")
         channel.sequence += 1
-        writer.add_message(
-            channel_id=channel.id, log_time=t_ns, publish_time=t_ns, sequence=channel.sequence, data=bytes(payload)
-        )
+        self._appender.append(channel.id, channel.sequence, t_ns, bytes(payload))
         self.message_count += 1
         self.payload_bytes += len(payload)
         return True
