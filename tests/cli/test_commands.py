@@ -72,9 +72,10 @@ def bench_module() -> types.ModuleType:
 def runtime_bench_module(calls: list) -> types.ModuleType:
     module = types.ModuleType("grader.runtime.bench")
 
-    def runtime_benchmark(move_circle=None, repeats=3):
-        calls.append(move_circle)
-        return {"sim_seconds": 40.0, "move_circle_wall_s_median": 0.48, "busy_loop_sim_s_per_wall_s": 34.2}
+    def runtime_benchmark(move_circle=None, repeats=3, move_circle_ros2=None):
+        calls.append(move_circle if move_circle_ros2 is None else (move_circle, move_circle_ros2))
+        return {"sim_seconds": 40.0, "move_circle_wall_s_median": 0.48, "busy_loop_sim_s_per_wall_s": 34.2,
+                "move_circle_ros2_over_ros1": 1.19}
 
     module.runtime_benchmark = runtime_benchmark
     return module
@@ -88,6 +89,18 @@ def test_bench_prints_physics_and_node_run_figures(grading, monkeypatch, capsys)
     out = capsys.readouterr().out
     assert "rtf" in out and "busy_loop_sim_s_per_wall_s" in out
     assert calls == [None]
+
+
+def test_bench_times_the_rclpy_move_circle_beside_the_rospy_one(grading, monkeypatch, capsys, tmp_path):
+    calls: list = []
+    fakes.install(monkeypatch, "sim.bench", bench_module())
+    fakes.install(monkeypatch, "grader.runtime.bench", runtime_bench_module(calls))
+    ros2 = tmp_path / "pkg" / "pkg" / "move_circle.py"
+    ros2.parent.mkdir(parents=True)
+    ros2.write_text("import rclpy\n")
+    assert main(["bench", "--seconds", "5", "--reference-ros2", str(tmp_path / "pkg")]) == 0
+    assert calls == [(None, ros2)]
+    assert "move_circle_ros2_over_ros1" in capsys.readouterr().out
 
 
 def check_bench_module(calls: list) -> types.ModuleType:
