@@ -202,4 +202,12 @@ CASES = [
         # object), so only which publishes arrived is compared.
         "markers arrived (linear.y) [1.0, 2.0, 3.0, 5.0]",
     )),
+    Case("p10_before_discovery", "p10_before_discovery.py", markers=True, stdout=(
+        "subscribers right after create_publisher 0",
+        "subscribers once matched 1",
+        "end",
+    ), stderr_empty=True, commands=(
+        "before Ctrl+C: commands arrived",
+        "markers arrived (linear.y) [4.0, 5.0]",
+    )),
 ]
