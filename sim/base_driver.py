@@ -74,10 +74,11 @@ class GazeboDiffDrive(BaseDriver):
         self._rims = (0.0, 0.0)
 
     def tick(self, linear: float, angular: float) -> WheelSpeeds:
-        targets = unicycle_to_wheels(linear, angular, self.geometry.wheel_separation)
-        self._rims = tuple(  # type: ignore[assignment]
-            rim + min(max(target - rim, -self._step), self._step) for rim, target in zip(self._rims, targets)
-        )
+        left, right = unicycle_to_wheels(linear, angular, self.geometry.wheel_separation)
+        rim_left, rim_right = self._rims
+        step = self._step
+        self._rims = (rim_left + min(max(left - rim_left, -step), step),
+                      rim_right + min(max(right - rim_right, -step), step))
         return self._rims
 
 

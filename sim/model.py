@@ -1,5 +1,9 @@
 """MuJoCo model of a diff-drive robot profile, built to the reference recipe that tracks commanded twists to ~0.01 %.
 
+Each distinct model is compiled (and settled) once per process and cached by its MJCF text, which holds everything
+that shapes it; every world gets its own copy of the compiled model, so a run that changed its model could not
+leak into the next one.
+
 Recipe (robots-and-sim.md §2–§4): free-joint base; sphere wheels (one contact each, no scrub torque) with priority 1
 so their stiff solref is not averaged with the floor's; frictionless priority-1 ball casters (condim 1); implicitfast,
 elliptic cone, impratio 10; ``<velocity>`` servos plus joint armature; contact margin equal to the static
@@ -7,9 +11,11 @@ penetration so the rolling radius is the geometric one.
 """
 from __future__ import annotations
 
+import copy
+import functools
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import mujoco
 
@@ -21,6 +27,7 @@ CONTACT_SOLREF = "0.004 1"
 CONTACT_SOLIMP = "0.95 0.99 0.001"
 WHEEL_FRICTION = "1 0.005 0.0001"
 SETTLE_STEPS = PHYSICS_HZ // 2  # long enough for the contacts to reach static penetration
+CACHED_MODELS = 64  # distinct compiled models kept per process (a robot with a few obstacle layouts each)
 # Geom groups: obstacles 0 (what a laser sees), the robot 1, the floor 2.
 OBSTACLE_GROUP, ROBOT_GROUP, FLOOR_GROUP = 0, 1, 2
 
@@ -103,11 +110,18 @@ def mjcf(profile: RobotProfile, wheel_radius: float, obstacles: Sequence[Box | C
 def build_model(profile: RobotProfile, wheel_radius_scale: float = 1.0,
                 obstacles: Sequence[Box | Cylinder] = ()) -> RobotModel:
     """Compile ``profile`` (wheels scaled by ``wheel_radius_scale``) among ``obstacles``, and set each robot contact's
-    margin to its static penetration."""
+    margin to its static penetration; the caller owns the returned model (a copy of the process's cached one)."""
     wheel_radius = profile.geometry.wheel_radius * wheel_radius_scale
-    model = mujoco.MjModel.from_xml_string(mjcf(profile, wheel_radius, obstacles))
+    compiled = _compile(mjcf(profile, wheel_radius, obstacles), wheel_radius, len(obstacles))
+    return replace(compiled, model=copy.copy(compiled.model))
+
+
+@functools.lru_cache(maxsize=CACHED_MODELS)
+def _compile(xml: str, wheel_radius: float, obstacle_count: int) -> RobotModel:
+    """The compiled, settled model of ``xml``; cached, so it must never be handed out (``build_model`` copies it)."""
+    model = mujoco.MjModel.from_xml_string(xml)
     obstacle_geoms = tuple(mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, f"obstacle_{i}")
-                           for i in range(len(obstacles)))
+                           for i in range(obstacle_count))
     _compensate_penetration(model, obstacle_geoms)
     joints = [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, f"wheel_{side}") for side in ("left", "right")]
     actuators = [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, f"wheel_{side}") for side in ("left", "right")]

@@ -1,14 +1,13 @@
 """Odometry as each robot computes it (Gazebo's world pose, or wheel-encoder dead reckoning), and the ground truth.
 
-Everything here reads MuJoCo state directly (qpos/qvel after ``mj_step``), in plain Python floats: it runs on every
-odometry tick, and a few small-array numpy calls would cost more than the arithmetic.
+Everything here reads the MuJoCo state as plain Python lists (``qpos``/``qvel`` after ``mj_step``, read once per tick
+by the world): it runs on every odometry tick, and a few small-array numpy calls would cost more than the arithmetic.
 """
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-
-import mujoco
 
 from sim.samples import Quat, Vec3
 
@@ -34,10 +33,10 @@ def quaternion_yaw(q: Quat) -> float:
     return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
 
 
-def ground_truth(data: mujoco.MjData) -> Estimate:
+def ground_truth(qpos: Sequence[float], qvel: Sequence[float]) -> Estimate:
     """World pose of the base frame and its body-frame twist, from the free joint (qpos 0–6, qvel 0–5)."""
-    px, py, pz, w, x, y, z = data.qpos[:7].tolist()
-    vx, vy, vz, wx, wy, wz = data.qvel[:6].tolist()  # linear in world axes, angular in body axes
+    px, py, pz, w, x, y, z = qpos[:7]
+    vx, vy, vz, wx, wy, wz = qvel[:6]  # linear in world axes, angular in body axes
     # rotate the world-frame velocity into the body frame: R(q)^T v
     bx = (1 - 2 * (y * y + z * z)) * vx + 2 * (x * y + w * z) * vy + 2 * (x * z - w * y) * vz
     by = 2 * (x * y - w * z) * vx + (1 - 2 * (x * x + z * z)) * vy + 2 * (y * z + w * x) * vz
@@ -48,8 +47,8 @@ def ground_truth(data: mujoco.MjData) -> Estimate:
 class WorldPoseOdometry:
     """Gazebo's ``odometrySource world``: the pose is the true world pose, so /odom starts at the spawn pose."""
 
-    def update(self, t_ns: int, data: mujoco.MjData) -> Estimate:
-        truth = ground_truth(data)
+    def update(self, t_ns: int, qpos: Sequence[float], qvel: Sequence[float]) -> Estimate:
+        truth = ground_truth(qpos, qvel)
         # gazebo_ros_diff_drive publishes the planar twist only: body-frame vx, vy and world ω_z
         return Estimate(truth.position, truth.orientation, (truth.linear[0], truth.linear[1], 0.0), (0.0, 0.0, truth.angular[2]))
 
@@ -62,16 +61,17 @@ class WheelOdometry:
     odometry drift against the ground truth, as on a real robot.
     """
 
-    def __init__(self, radius: float, separation: float, wheel_qpos: tuple[int, int], t_ns: int, data: mujoco.MjData) -> None:
+    def __init__(self, radius: float, separation: float, wheel_qpos: tuple[int, int], t_ns: int,
+                 qpos: Sequence[float]) -> None:
         self._radius = radius
         self._separation = separation
-        self._qpos = wheel_qpos
-        self._angles = (float(data.qpos[wheel_qpos[0]]), float(data.qpos[wheel_qpos[1]]))
+        self._left, self._right = wheel_qpos
+        self._angles = (qpos[self._left], qpos[self._right])
         self._t_ns = t_ns
         self._x = self._y = self._yaw = 0.0
 
-    def update(self, t_ns: int, data: mujoco.MjData) -> Estimate:
-        left, right = float(data.qpos[self._qpos[0]]), float(data.qpos[self._qpos[1]])
+    def update(self, t_ns: int, qpos: Sequence[float], qvel: Sequence[float]) -> Estimate:
+        left, right = qpos[self._left], qpos[self._right]
         d_left = (left - self._angles[0]) * self._radius
         d_right = (right - self._angles[1]) * self._radius
         self._angles = (left, right)

@@ -2,16 +2,22 @@
 
 Physics steps at 600 Hz (``sim.clock``). Between ticks it is stepped in one ``mj_step(nstep=n)`` batch; Python runs
 only on ticks: the control tick (latch the command, run the base driver, set the servo targets), the odometry and /tf
-ticks and the 50 Hz ground truth. Same scenario → same bits, on one machine and MuJoCo version.
+ticks, the 50 Hz ground truth and the sensors. What is due on each step of the ticks' common cycle is planned once, and
+each tick reads the state once as plain lists. A world is built already run to its start time (the robot has been
+standing there, waiting); that state is kept per process, so the next world with the same start skips the wait.
+Same scenario → same bits, on one machine and MuJoCo version.
 """
 from __future__ import annotations
 
+import copy
 import math
+from collections import OrderedDict
 from collections.abc import Collection, Mapping
+from dataclasses import dataclass
 
 import mujoco
 
-from sim.base_driver import make_driver
+from sim.base_driver import BaseDriver, CommandLatch, make_driver
 from sim.clock import last_step_at, step_ns, steps_per_tick
 from sim.model import build_model
 from sim.odometry import Estimate, WheelOdometry, WorldPoseOdometry, ground_truth, quaternion_yaw
@@ -25,12 +31,41 @@ GROUND_TRUTH_HZ = 50  # above every odometry rate (30, 50 Hz); each sample is a 
 GROUND_TRUTH_TOPIC = "/ground_truth/odom"
 GROUND_TRUTH_FRAME = "world"
 TF_TOPIC = "/tf"
+NO_SCRIPT_NS = 2**63  # "the next scripted command" once there is none: later than any sim time
+START_STATES = 16  # worlds at their start kept per process (each holds an MjData copy, about 0.5 MB resident)
+
+Sensor = Imu | JointStates | Scanner
+# What is due on one step of the cycle: control, odometry, /tf, ground truth, and the sensors in publication order.
+Tick = tuple[bool, bool, bool, bool, tuple[Sensor, ...]]
 
 
 NODE_NAME = "/gazebo"  # Gazebo's node publishes the simulated robot's topics
 
 class SimError(Exception):
     """A world that cannot be built as asked, or a call that breaks the world's contract (e.g. going back in time)."""
+
+
+@dataclass(frozen=True)
+class _StartState:
+    """A world one nanosecond before its start: the physics and every part that evolves while the robot waits.
+
+    The latch, driver, odometry and IMU hold only immutable values (rebound, never changed in place), so a shallow
+    copy of each is independent of the world it came from.
+    """
+
+    data: mujoco.MjData
+    latch: CommandLatch
+    driver: BaseDriver
+    odometry: WheelOdometry | WorldPoseOdometry
+    imu: Imu | None
+    k: int
+    time_ns: int
+    command: tuple[float, float]
+    wheel_targets: tuple[float, float]
+    estimate: Estimate
+
+
+_start_states: OrderedDict[str, _StartState] = OrderedDict()  # least recently used first
 
 
 class World(ScenarioTimes):
@@ -52,31 +87,48 @@ class World(ScenarioTimes):
         robot = build_model(self.profile, scenario.imperfections.wheel_radius_scale, scenario.obstacles)
         self.model = robot.model
         self.data = mujoco.MjData(self.model)
-        pose = scenario.initial_pose
-        self.data.qpos[:7] = (pose.x, pose.y, 0.0, math.cos(pose.yaw / 2), 0.0, 0.0, math.sin(pose.yaw / 2))
+        # Views of MjData's buffers, which never move: the ticks read them without going through the binding.
+        self._qpos, self._qvel, self._ctrl = self.data.qpos, self.data.qvel, self.data.ctrl
         self._wheel_qvel = robot.wheel_qvel
         self._wheel_ctrl = robot.wheel_ctrl
-
-        self._latch, self._driver = make_driver(self.mode, geometry)
-        self._odometry: WheelOdometry | WorldPoseOdometry = (
-            WorldPoseOdometry()
-            if self.mode.odometry.source == "world"
-            else WheelOdometry(geometry.wheel_radius, geometry.wheel_separation, robot.wheel_qpos, 0, self.data)
-        )
+        sensors = self.mode.sensors
+        start_key = _start_key(self.profile, self.mode_name, scenario)
+        saved = _start_states.get(start_key)
+        self._odometry: WheelOdometry | WorldPoseOdometry
+        if saved is None:
+            pose = scenario.initial_pose
+            self.data.qpos[:7] = (pose.x, pose.y, 0.0, math.cos(pose.yaw / 2), 0.0, 0.0, math.sin(pose.yaw / 2))
+            qpos, qvel = self._qpos.tolist(), self._qvel.tolist()
+            self._latch, self._driver = make_driver(self.mode, geometry)
+            self._odometry = (
+                WorldPoseOdometry()
+                if self.mode.odometry.source == "world"
+                else WheelOdometry(geometry.wheel_radius, geometry.wheel_separation, robot.wheel_qpos, 0, qpos)
+            )
+            imu = Imu(sensors.imu, self.model, 0, qvel) if sensors.imu is not None else None
+        else:
+            _start_states.move_to_end(start_key)
+            mujoco.mj_copyData(self.data, self.model, saved.data)
+            self._latch, self._driver = copy.copy(saved.latch), copy.copy(saved.driver)
+            self._odometry, imu = copy.copy(saved.odometry), copy.copy(saved.imu)
+        odometry, tf = self.mode.odometry, self.mode.tf
+        self._odometry_names = (odometry.topic, odometry.frame_id, odometry.child_frame_id)
+        self._tf_names = (TF_TOPIC, tf.parent, tf.child) if tf is not None else None
+        self._truth_names = (GROUND_TRUTH_TOPIC, GROUND_TRUTH_FRAME, odometry.child_frame_id)
         self._pose_covariance = covariance_matrix(self.mode.odometry.pose_covariance)
         self._twist_covariance = covariance_matrix(self.mode.odometry.twist_covariance)
         self._control_every = steps_per_tick(self.mode.control_rate_hz)
         self._odometry_every = steps_per_tick(self.mode.odometry.rate_hz)
         self._tf_every = steps_per_tick(self.mode.tf.rate_hz) if self.mode.tf is not None else None
         self._truth_every = steps_per_tick(GROUND_TRUTH_HZ)
-        sensors = self.mode.sensors
-        self._sensors: list[tuple[int, Imu | JointStates | Scanner]] = []
+        self._sensors: list[tuple[int, Sensor]] = []
         if sensors.imu is not None:
-            self._sensors.append((steps_per_tick(sensors.imu.rate_hz), Imu(sensors.imu, self.model, 0, self.data)))
+            assert imu is not None
+            self._sensors.append((steps_per_tick(sensors.imu.rate_hz), imu))
         if sensors.joint_states is not None:
             self._sensors.append((steps_per_tick(sensors.joint_states.rate_hz), JointStates(sensors.joint_states, robot)))
         if sensors.scan is not None:
-            self._sensors.append((steps_per_tick(sensors.scan.rate_hz), Scanner(sensors.scan, robot)))
+            self._sensors.append((steps_per_tick(sensors.scan.rate_hz), Scanner(sensors.scan, robot, self.data)))
         self._output_periods = tuple(
             p for p in (self._odometry_every, self._tf_every, self._truth_every, *(p for p, _ in self._sensors))
             if p is not None
@@ -86,17 +138,27 @@ class World(ScenarioTimes):
         self._cycle = math.lcm(self._control_every, *self._output_periods)
         ticks = [r for r in range(self._cycle) if any(r % p == 0 for p in (self._control_every, *self._output_periods))]
         self._to_next_tick = [next((t for t in ticks if t > r), self._cycle) - r for r in range(self._cycle)]
+        self._plan = [self._due_at(r) for r in range(self._cycle)]
 
         start_ns = scenario.start_ns
         self._script = [(start_ns + command.t_ns, command) for command in scenario.script]
         self._next_script = 0
-        self._command = (0.0, 0.0)
-        self._wheel_targets = (0.0, 0.0)
-        self._k = 0
-        self._time_ns = 0
+        self._next_script_ns = self._script[0][0] if self._script else NO_SCRIPT_NS
         self._estimate: Estimate  # set by the odometry tick at step 0
-        self._tick(0, None)
-        # The world has been running since 0; commands scripted for the start itself come out of the first advance_to.
+        if saved is None:
+            self._command = (0.0, 0.0)
+            self._wheel_targets = (0.0, 0.0)
+            self._k = 0
+            self._time_ns = 0
+            self._tick(0, 0, None)
+            if start_ns > 0:
+                # The world has been running since 0, the robot waiting: nothing is scripted before the start.
+                self._run(start_ns - 1, [], emit=False)
+                _remember(start_key, self._start_state(imu))
+        else:
+            self._k, self._time_ns, self._estimate = saved.k, saved.time_ns, saved.estimate
+            self._command, self._wheel_targets = saved.command, saved.wheel_targets
+        # Commands scripted for the start itself come out of the first advance_to.
         self._pending: list[Sample] = []
         self._run(start_ns, self._pending, emit=False)
 
@@ -181,7 +243,7 @@ class World(ScenarioTimes):
 
     def state(self) -> dict[str, float]:
         """Named quantities now: true pose and body twist, wheel speeds (rad/s) and servo targets, the command in force."""
-        truth = ground_truth(self.data)
+        truth = ground_truth(self._qpos.tolist(), self._qvel.tolist())
         x, y, z, w = truth.orientation
         left, right = self._wheel_qvel
         return {
@@ -207,60 +269,93 @@ class World(ScenarioTimes):
 
     # -- the loop ------------------------------------------------------------------------------------------------
 
+    def _start_state(self, imu: Imu | None) -> _StartState:
+        """A copy of this world as it is now (before its start), for the next world with the same start."""
+        data = mujoco.MjData(self.model)
+        mujoco.mj_copyData(data, self.model, self.data)
+        return _StartState(data, copy.copy(self._latch), copy.copy(self._driver), copy.copy(self._odometry),
+                           copy.copy(imu), self._k, self._time_ns, self._command, self._wheel_targets, self._estimate)
+
+    def _due_at(self, r: int) -> Tick:
+        """What is due on a step ``r`` (mod the cycle) after the start of a cycle."""
+        return (r % self._control_every == 0, r % self._odometry_every == 0,
+                self._tf_every is not None and r % self._tf_every == 0, r % self._truth_every == 0,
+                tuple(sensor for period, sensor in self._sensors if r % period == 0))
+
     def _run(self, t_ns: int, out: list[Sample], emit: bool) -> None:
         """Process every event up to ``t_ns``: scripted commands first, then physics, then that step's ticks."""
         last = last_step_at(t_ns)
+        model, data, to_next_tick, cycle = self.model, self.data, self._to_next_tick, self._cycle
+        emitted = out if emit else None
+        k = self._k
         while True:
-            k = self._k + self._to_next_tick[self._k % self._cycle]
-            if k > last:
+            tick = k + to_next_tick[k % cycle]
+            if tick > last:
                 break
-            self._apply_script(step_ns(k), out)
-            mujoco.mj_step(self.model, self.data, nstep=k - self._k)
-            self._k = k
-            self._tick(k, out if emit else None)
-        if last > self._k:
-            mujoco.mj_step(self.model, self.data, nstep=last - self._k)
+            tick_ns = step_ns(tick)
+            if self._next_script_ns <= tick_ns:
+                self._apply_script(tick_ns, out)
+            mujoco.mj_step(model, data, nstep=tick - k)
+            self._k = k = tick
+            self._tick(k, tick_ns, emitted)
+        if last > k:
+            mujoco.mj_step(model, data, nstep=last - k)
             self._k = last
         self._apply_script(t_ns, out)
         self._time_ns = t_ns
 
     def _apply_script(self, t_ns: int, out: list[Sample]) -> None:
         """Deliver the scripted commands due by ``t_ns`` (as if a node had published them then)."""
-        while self._next_script < len(self._script) and self._script[self._next_script][0] <= t_ns:
+        while self._next_script_ns <= t_ns:
             due_ns, command = self._script[self._next_script]
             self._next_script += 1
+            self._next_script_ns = (self._script[self._next_script][0] if self._next_script < len(self._script)
+                                    else NO_SCRIPT_NS)
             topic = command.topic or self._topics[0]
             self._latch.receive(due_ns, command.linear[0], command.angular[2])
             out.append(CommandSample(due_ns, topic, command.linear, command.angular))
 
-    def _tick(self, k: int, out: list[Sample] | None) -> None:
-        """The driver, odometry, /tf, ground-truth and sensor ticks on step ``k``; samples go to ``out`` unless None."""
-        t_ns = step_ns(k)
-        if k % self._control_every == 0:
+    def _tick(self, k: int, t_ns: int, out: list[Sample] | None) -> None:
+        """The driver, odometry, /tf, ground-truth and sensor ticks on step ``k`` (at ``t_ns``); samples go to ``out``
+        unless None."""
+        control, odometry, tf, truth, sensors = self._plan[k % self._cycle]
+        if control:
             self._command = self._latch.command_at(t_ns)
             rims = self._driver.tick(*self._command)
             radius = self.profile.geometry.wheel_radius  # the driver believes the nominal radius
-            self._wheel_targets = (rims[0] / radius, rims[1] / radius)
-            self.data.ctrl[self._wheel_ctrl[0]] = self._wheel_targets[0]
-            self.data.ctrl[self._wheel_ctrl[1]] = self._wheel_targets[1]
-        if k % self._odometry_every == 0:
-            self._estimate = self._odometry.update(t_ns, self.data)
+            self._wheel_targets = left, right = (rims[0] / radius, rims[1] / radius)
+            ctrl = self._ctrl
+            ctrl[self._wheel_ctrl[0]] = left
+            ctrl[self._wheel_ctrl[1]] = right
+        qpos, qvel = self._qpos.tolist(), self._qvel.tolist()
+        if odometry:
+            self._estimate = e = self._odometry.update(t_ns, qpos, qvel)
             if out is not None:
-                odom = self.mode.odometry
-                e = self._estimate
-                out.append(OdometrySample(t_ns, odom.topic, odom.frame_id, odom.child_frame_id, e.position, e.orientation,
-                                          e.linear, e.angular, self._pose_covariance, self._twist_covariance))
+                out.append(OdometrySample(t_ns, *self._odometry_names, e.position, e.orientation, e.linear, e.angular,
+                                          self._pose_covariance, self._twist_covariance))
         if out is not None:
-            if self._tf_every is not None and k % self._tf_every == 0:
-                tf = self.mode.tf
-                assert tf is not None
-                out.append(TransformSample(t_ns, TF_TOPIC, tf.parent, tf.child, self._estimate.position, self._estimate.orientation))
-            if k % self._truth_every == 0:
-                truth = ground_truth(self.data)
-                out.append(GroundTruthSample(t_ns, GROUND_TRUTH_TOPIC, GROUND_TRUTH_FRAME, self.mode.odometry.child_frame_id,
-                                             truth.position, truth.orientation, truth.linear, truth.angular))
-        for period, sensor in self._sensors:
-            if k % period == 0:
-                sample = sensor.sample(t_ns, self.data)  # the IMU differentiates velocity: it samples even unrecorded
-                if out is not None:
-                    out.append(sample)
+            if tf:
+                assert self._tf_names is not None
+                out.append(TransformSample(t_ns, *self._tf_names, self._estimate.position, self._estimate.orientation))
+            if truth:
+                g = ground_truth(qpos, qvel)
+                out.append(GroundTruthSample(t_ns, *self._truth_names, g.position, g.orientation, g.linear, g.angular))
+        for sensor in sensors:
+            sample = sensor.sample(t_ns, qpos, qvel)  # the IMU differentiates velocity: it samples even unrecorded
+            if out is not None:
+                out.append(sample)
+
+
+def _start_key(profile: RobotProfile, mode_name: str, scenario: Scenario) -> str:
+    """Everything that shapes a world before its start (the script acts only from the start on); repr keeps every
+    float's exact value, -0.0 included."""
+    return repr((profile.model_dump(), mode_name, scenario.imperfections.wheel_radius_scale,
+                 [obstacle.model_dump() for obstacle in scenario.obstacles], scenario.initial_pose.model_dump(),
+                 scenario.start_ns))
+
+
+def _remember(key: str, state: _StartState) -> None:
+    """Keep ``state`` for ``key``, forgetting the least recently used start beyond ``START_STATES``."""
+    _start_states[key] = state
+    while len(_start_states) > START_STATES:
+        _start_states.popitem(last=False)
