@@ -18,7 +18,21 @@ from sim.samples import ImuSample, JointStateSample, ScanSample
 _OBSTACLES_ONLY = np.array([1 if group == OBSTACLE_GROUP else 0 for group in range(6)], dtype=np.uint8)
 
 
-class Imu:
+class _Sensor:
+    """What every sensor has: the topic it publishes on."""
+
+    _topic: str
+
+    @property
+    def topic(self) -> str:
+        return self._topic
+
+    #: Whether ``sample`` carries state from one sample to the next (the IMU differentiates velocity), so the world
+    #: must sample it even when nobody listens.
+    stateful = False
+
+
+class Imu(_Sensor):
     """Orientation, body angular velocity, and proper acceleration from the change of velocity since the last sample.
 
     The acceleration is the world-frame velocity difference over the sample period plus gravity's reaction, rotated
@@ -28,6 +42,7 @@ class Imu:
 
     def __init__(self, config: ImuConfig, model: mujoco.MjModel, t_ns: int, qvel: Sequence[float]) -> None:
         self._topic, self._frame_id = config.topic, config.frame_id
+        self.stateful = True
         self._gx, self._gy, self._gz = model.opt.gravity.tolist()
         self._vx, self._vy, self._vz = qvel[:3]
         self._t_ns = t_ns
@@ -49,7 +64,7 @@ class Imu:
         return ImuSample(t_ns, self._topic, self._frame_id, (x, y, z, w), (wx, wy, wz), body)
 
 
-class JointStates:
+class JointStates(_Sensor):
     """Wheel joint angles (unwrapped, as Gazebo reports a continuous joint) and, if configured, their speeds."""
 
     def __init__(self, config: JointStatesConfig, robot: RobotModel) -> None:
@@ -65,11 +80,12 @@ class JointStates:
         return JointStateSample(t_ns, self._topic, self._frame_id, self._names, positions, velocities)
 
 
-class Scanner:
+class Scanner(_Sensor):
     """A planar laser scanner mounted on the base; with no obstacles in the scenario every beam reads +inf."""
 
     def __init__(self, config: ScanConfig, robot: RobotModel, data: mujoco.MjData) -> None:
         self._config = config
+        self._topic = config.topic
         self._model, self._data = robot.model, data
         self._body = robot.base_body
         self._has_obstacles = bool(robot.obstacle_geoms)

@@ -270,6 +270,9 @@ class TurtlesimWorld(ScenarioTimes):
         self._receive(turtle, self._time_ns, linear, angular)
         return True
 
+    def listen(self, topics: Collection[str] | None) -> None:
+        """turtlesim publishes every topic whoever listens (its pose and colour sensor are all it has)."""
+
     def advance_to(self, t_ns: int) -> list[Sample]:
         """Run the updates up to ``t_ns``; return the samples due in (previous time, ``t_ns``], in time order."""
         if t_ns < self._time_ns:

@@ -121,6 +121,7 @@ class World(ScenarioTimes):
         self._odometry_every = steps_per_tick(self.mode.odometry.rate_hz)
         self._tf_every = steps_per_tick(self.mode.tf.rate_hz) if self.mode.tf is not None else None
         self._truth_every = steps_per_tick(GROUND_TRUTH_HZ)
+        self._listened: frozenset[str] | None = None  # see listen()
         self._sensors: list[tuple[int, Sensor]] = []
         if sensors.imu is not None:
             assert imu is not None
@@ -216,6 +217,14 @@ class World(ScenarioTimes):
             return False
         self._latch.receive(self._time_ns, float(linear[0]), float(angular[2]))
         return True
+
+    def listen(self, topics: Collection[str] | None) -> None:
+        """Publish the sensor topics among ``topics`` only (None, the default: every sensor), from the next step on.
+
+        A sensor nobody subscribes to changes nothing in the world, and at 200 Hz (a TurtleBot3's /imu) its samples
+        cost more to encode and record than the physics costs to run; the session names what its nodes subscribe to.
+        Odometry, /tf and ground truth are always published."""
+        self._listened = None if topics is None else frozenset(topics)
 
     def advance_to(self, t_ns: int) -> list[Sample]:
         """Step physics to ``t_ns``; return the samples due in (previous time, ``t_ns``], in time order."""
@@ -341,9 +350,11 @@ class World(ScenarioTimes):
                 g = ground_truth(qpos, qvel)
                 out.append(GroundTruthSample(t_ns, *self._truth_names, g.position, g.orientation, g.linear, g.angular))
         for sensor in sensors:
-            sample = sensor.sample(t_ns, qpos, qvel)  # the IMU differentiates velocity: it samples even unrecorded
-            if out is not None:
-                out.append(sample)
+            wanted = out is not None and (self._listened is None or sensor.topic in self._listened)
+            if wanted or sensor.stateful:  # the IMU differentiates velocity: it samples even unrecorded
+                sample = sensor.sample(t_ns, qpos, qvel)
+                if wanted:
+                    out.append(sample)
 
 
 def _start_key(profile: RobotProfile, mode_name: str, scenario: Scenario) -> str:

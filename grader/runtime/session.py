@@ -117,6 +117,7 @@ class Session:
         self._recorder: Recorder | None = None
         self.params: ParamServer | None = None  # the run's parameter server, from the start of the recording
         self._next_usage_check = 0.0
+        self._listened: set[str] | None = None  # the topics the world was last told nodes subscribe to
 
     # -- public ------------------------------------------------------------------------------------------------
     def run(self) -> RunResult:
@@ -259,13 +260,17 @@ class Session:
             horizon = self.end_ns
             t = self.world.time_ns
             self._replay_latched(t)
+            subscribed = {sub.topic for node in alive for sub in node.link.state.subscribers.values()
+                          if not sub.closed}
+            if subscribed != self._listened:
+                # Sensors publish while someone listens: nobody reads an unsubscribed 200 Hz /imu, it only costs.
+                self._listened = subscribed
+                self.world.listen(subscribed)
             pending_now = any(n.deliveries for n in alive)
             if pending_now:
                 t_next = t
             else:
                 # The world stops the loop only for what some node subscribes to; the rest is recorded on the way.
-                subscribed = {sub.topic for node in alive for sub in node.link.state.subscribers.values()
-                              if not sub.closed}
                 candidates = [c for c in (horizon, self.world.next_output_ns(subscribed)) if c is not None]
                 candidates += self._latched_connect_times(t)
                 for node in alive:

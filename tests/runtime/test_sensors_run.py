@@ -35,10 +35,28 @@ def test_the_node_stops_short_of_the_wall(wall_run):
     assert any("stopped 0.4" in text or "stopped 0.5" in text for _, _, text in rec.output_lines())
 
 
-def test_sensor_topics_are_recorded_at_their_rates(wall_run):
-    _, rec = wall_run
+def test_only_subscribed_sensor_topics_are_published(wall_run):
+    result, rec = wall_run
     counts = {t.topic: t.count for t in rec.topics()}
-    seconds = 15.0
-    assert counts["/imu"] == pytest.approx(200 * seconds, abs=2)
-    assert counts["/joint_states"] == pytest.approx(30 * seconds, abs=2)
-    assert counts["/scan"] == pytest.approx(5 * seconds, abs=2)
+    # /scan at 5 Hz while the node listened: from its subscription until it exited
+    stamps = [t_ns for t_ns, _ in rec.world_messages("/scan")]
+    gaps = {b - a for a, b in zip(stamps, stamps[1:])}
+    assert gaps == {200_000_000} and counts["/scan"] > 10
+    assert stamps[-1] / 1e9 <= result.nodes[0].ended_s
+    assert "/imu" not in counts and "/joint_states" not in counts  # nobody listened: never produced
+
+
+def test_a_subscribed_imu_arrives_and_is_recorded_at_its_rate(tmp_path):
+    spec = RunSpec(scenario=Scenario(duration=3.0, shutdown_at=2.5),
+                   nodes=(NodeSpec(script=NODES / "listen_imu.py"),))
+    run(spec, tmp_path / "imu.mcap", tmp_path / "imu.log")
+    rec = Recording.open(tmp_path / "imu.mcap")
+    counts = {t.topic: t.count for t in rec.topics() if t.origin == "world"}
+    # while the node listened (from its subscription until it exited after the Ctrl+C at 2.5 s), at their rates
+    imu = [t_ns for t_ns, _ in rec.world_messages("/imu")]
+    assert {b - a for a, b in zip(imu, imu[1:])} == {5_000_000} and counts["/imu"] >= 200 * 2.3
+    assert counts["/joint_states"] == pytest.approx(counts["/imu"] * 30 / 200, abs=2)
+    assert "/scan" not in counts
+    printed = [line.text for line in rec.output_lines() if line.text.startswith("received")]
+    received_imu = int(printed[0].split()[1])
+    assert 0 < received_imu <= counts["/imu"]
