@@ -27,9 +27,8 @@ class _Sensor:
     def topic(self) -> str:
         return self._topic
 
-    #: Whether ``sample`` carries state from one sample to the next (the IMU differentiates velocity), so the world
-    #: must sample it even when nobody listens.
-    stateful = False
+    def observe(self, t_ns: int, qvel: Sequence[float]) -> None:
+        """A sample time passes unheard: keep whatever the next sample depends on (nothing, for most sensors)."""
 
 
 class Imu(_Sensor):
@@ -42,7 +41,6 @@ class Imu(_Sensor):
 
     def __init__(self, config: ImuConfig, model: mujoco.MjModel, t_ns: int, qvel: Sequence[float]) -> None:
         self._topic, self._frame_id = config.topic, config.frame_id
-        self.stateful = True
         self._gx, self._gy, self._gz = model.opt.gravity.tolist()
         self._vx, self._vy, self._vz = qvel[:3]
         self._t_ns = t_ns
@@ -62,6 +60,11 @@ class Imu(_Sensor):
                 2 * (x * y - w * z) * ax + (1 - 2 * (x * x + z * z)) * ay + 2 * (y * z + w * x) * az,
                 2 * (x * z + w * y) * ax + 2 * (y * z - w * x) * ay + (1 - 2 * (x * x + y * y)) * az)
         return ImuSample(t_ns, self._topic, self._frame_id, (x, y, z, w), (wx, wy, wz), body)
+
+    def observe(self, t_ns: int, qvel: Sequence[float]) -> None:
+        """The velocity the next sample differentiates against, as ``sample`` would have kept it."""
+        self._vx, self._vy, self._vz = qvel[:3]
+        self._t_ns = t_ns
 
 
 class JointStates(_Sensor):

@@ -350,11 +350,10 @@ class World(ScenarioTimes):
                 g = ground_truth(qpos, qvel)
                 out.append(GroundTruthSample(t_ns, *self._truth_names, g.position, g.orientation, g.linear, g.angular))
         for sensor in sensors:
-            wanted = out is not None and (self._listened is None or sensor.topic in self._listened)
-            if wanted or sensor.stateful:  # the IMU differentiates velocity: it samples even unrecorded
-                sample = sensor.sample(t_ns, qpos, qvel)
-                if wanted:
-                    out.append(sample)
+            if out is not None and (self._listened is None or sensor.topic in self._listened):
+                out.append(sensor.sample(t_ns, qpos, qvel))
+            else:
+                sensor.observe(t_ns, qvel)  # the IMU differentiates velocity: it keeps its state unheard
 
 
 def _start_key(profile: RobotProfile, mode_name: str, scenario: Scenario) -> str:
