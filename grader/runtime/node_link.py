@@ -218,7 +218,9 @@ class NodeLink:
         while True:
             kind, payload = self._read()
             if kind == ch.WAIT:
-                wake = self._parse(kind, payload).wake_ns
+                plain, wake = ch.plain_wait(payload)
+                if not plain:
+                    wake = self._parse(kind, payload).wake_ns
                 # A wake-up in the past would let a node stall the world forever: it costs at least one quantum.
                 return max(wake, t_ns + ch.CALL_QUANTUM_NS) if wake is not None else None
             try:

@@ -74,3 +74,25 @@ def test_a_field_off_its_schema_is_a_frame_error_naming_it(kind, obj, says):
 def test_payloads_that_are_not_one_json_object_are_frame_errors(payload):
     with pytest.raises(frames.FrameError):
         frames.parse(ch.LOG, payload)
+
+
+@pytest.mark.parametrize("t_ns,clock_ns", [(0, 0), (5, 0), (2_000_000_001, 2_000_000_000), (2**63 - 1, 10)])
+def test_plain_batch_header_is_the_json_module_s_bytes(t_ns: int, clock_ns: int) -> None:
+    header = {"t_ns": t_ns, "clock_ns": clock_ns}
+    payload = _payload(ch.encode_batch(header, [(1, b"ab")]))
+    head = json.dumps(header, separators=(",", ":")).encode()
+    assert payload[4:4 + len(head)] == head
+    assert ch.decode_batch(payload) == (header, [(1, b"ab")])
+
+
+@pytest.mark.parametrize("wake", [None, 0, 10, 2**63])
+def test_wait_frames_read_back_as_written(wake) -> None:
+    payload = _payload(ch.encode_wait(wake))
+    assert json.loads(payload) == {"wake_ns": wake}
+    assert ch.plain_wait(payload) == (True, wake)
+
+
+@pytest.mark.parametrize("payload", [b'{"wake_ns": 5}', b'{"wake_ns":-1}', b'{"wake_ns":05}', b'{"wake_ns":1.5}',
+                                     b'{"wake_ns":5,"x":1}', b'{"wake_ns":true}', b'{"wake_ns":5}\n'])
+def test_anything_else_in_a_wait_goes_to_the_schema(payload: bytes) -> None:
+    assert ch.plain_wait(payload) == (False, None)

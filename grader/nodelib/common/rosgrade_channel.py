@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import struct
 
 PROTOCOL = 4
@@ -67,6 +68,11 @@ _HEADER = struct.Struct("<IB")
 _ID = struct.Struct("<I")
 _ID_LEN = struct.Struct("<II")
 _STREAM = struct.Struct("<B")
+# Every lockstep step sends one BATCH and one WAIT, and almost all of them carry nothing but times: those two
+# headers are written and read without the json module (the same bytes json.dumps writes, so the contract is still
+# JSON); anything else goes through json.
+_PLAIN_BATCH = re.compile(rb'\{"t_ns":(0|[1-9][0-9]{0,18}),"clock_ns":(0|[1-9][0-9]{0,18})\}')
+_PLAIN_WAIT = re.compile(rb'\{"wake_ns":(?:null|(0|[1-9][0-9]{0,18}))\}')
 
 
 class ChannelError(Exception):
@@ -92,7 +98,11 @@ def encode_batch(header: dict, deliveries: list[tuple[int, bytes]]) -> bytes:
 
     Payload: ``u32 header length | header JSON | (u32 topic handle | u32 length | message bytes)*``.
     """
-    head = json.dumps(header, separators=(",", ":")).encode()
+    t_ns, clock_ns = header.get("t_ns"), header.get("clock_ns")
+    if len(header) == 2 and type(t_ns) is int and type(clock_ns) is int and t_ns >= 0 and clock_ns >= 0:
+        head = b'{"t_ns":%d,"clock_ns":%d}' % (t_ns, clock_ns)
+    else:
+        head = json.dumps(header, separators=(",", ":")).encode()
     parts = [_ID.pack(len(head)), head]
     for ident, data in deliveries:
         parts += (_ID_LEN.pack(ident, len(data)), data)
@@ -106,8 +116,12 @@ def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:
     end = 4 + _ID.unpack_from(payload)[0]
     if end > len(payload):
         raise ChannelError("BATCH header runs past the end of the frame")
-    # The header may carry other nodes' parameter changes: bounded by the frame, not by MAX_JSON_BYTES.
-    header = decode_json(payload[4:end], limit=MAX_FRAME_BYTES)
+    plain = _PLAIN_BATCH.fullmatch(payload, 4, end)
+    if plain is not None:
+        header: dict = {"t_ns": int(plain.group(1)), "clock_ns": int(plain.group(2))}
+    else:
+        # The header may carry other nodes' parameter changes: bounded by the frame, not by MAX_JSON_BYTES.
+        header = decode_json(payload[4:end], limit=MAX_FRAME_BYTES)
     deliveries = []
     while end < len(payload):
         if end + 8 > len(payload):
@@ -118,6 +132,20 @@ def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:
             raise ChannelError("BATCH delivery runs past the end of the frame")
         deliveries.append((ident, payload[end - size:end]))
     return header, deliveries
+
+
+def encode_wait(wake_ns: int | None) -> bytes:
+    """A WAIT frame: ``{"wake_ns": n}`` (null: nothing to wake for but messages)."""
+    return encode(WAIT, b'{"wake_ns":null}' if wake_ns is None else b'{"wake_ns":%d}' % wake_ns)
+
+
+def plain_wait(payload: bytes) -> tuple[bool, int | None]:
+    """(True, wake_ns) when a WAIT payload is exactly what encode_wait writes; (False, None) for anything else,
+    which the grader then checks against the WAIT schema (and words the violation)."""
+    match = _PLAIN_WAIT.fullmatch(payload)
+    if match is None:
+        return False, None
+    return True, None if match.group(1) is None else int(match.group(1))
 
 
 def encode_header_bytes(kind: int, header: dict, data: bytes) -> bytes:

@@ -267,7 +267,7 @@ class Scheduler:
     def _exchange(self) -> None:
         """Send WAIT with the earliest deadline, apply the grader's batch and queue the threads it wakes."""
         deadlines = [w.deadline_ns for w in self._blocked if w.deadline_ns is not None]
-        self.link.send_json(ch.WAIT, {"wake_ns": min(deadlines) if deadlines else None})
+        self.link.send(ch.encode_wait(min(deadlines) if deadlines else None))
         batch = self.link.read_batch()
         if batch.t_ns < self.world_ns:
             raise SchedulerError(f"grader moved world time backwards: {batch.t_ns} < {self.world_ns}")
