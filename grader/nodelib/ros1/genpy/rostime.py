@@ -31,7 +31,7 @@ class TVal:
     _slot_types = ["int32", "int32"]
 
     def __init__(self, secs=0, nsecs=0):
-        if not isinstance(secs, numbers.Integral):
+        if type(secs) is not int and not isinstance(secs, numbers.Integral):  # an ABC check only when not an int
             # a float (or anything else) is taken as seconds; genpy computes int() first, then the fraction
             if nsecs != 0:
                 raise ValueError("if secs is a float, nsecs cannot be set")
