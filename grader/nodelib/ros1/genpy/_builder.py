@@ -10,6 +10,7 @@ import hashlib
 import struct
 import sys
 import types
+from collections.abc import Callable
 
 from . import _msgdefs
 from .message import DeserializationError, Message, SerializationError, _rosmsg_errors, numpy1_retry, struct_I
@@ -416,24 +417,64 @@ def service_class(full_name: str) -> type:
     return cls
 
 
-def export(package_module: str) -> dict[str, type]:
-    """The classes of package_module ('geometry_msgs.msg' or 'std_srvs.srv'), registering its '_Name' submodules."""
+def _exports(package_module: str) -> dict[str, tuple[str, str]]:
+    """Class name -> (what it is, its type) for a package module ('geometry_msgs.msg' or 'std_srvs.srv'), without
+    building anything: "msg", or "srv"/"request"/"response" of a service."""
     pkg, kind = package_module.split(".")
-    exported: dict[str, list[type]] = {}
+    table: dict[str, tuple[str, str]] = {}
     if kind == "msg":
         for full_name in _msgdefs.MESSAGES:
             if full_name.startswith(pkg + "/"):
-                exported[full_name.split("/")[1]] = [message_class(full_name)]
+                table[full_name.split("/")[1]] = ("msg", full_name)
     else:
         for full_name in _msgdefs.SERVICES:
             if full_name.startswith(pkg + "/"):
-                srv = service_class(full_name)
-                exported[full_name.split("/")[1]] = [srv, srv._request_class, srv._response_class]
-    names: dict[str, type] = {}
-    for stem, classes in sorted(exported.items()):
+                name = full_name.split("/")[1]
+                table.update({name: ("srv", full_name), name + "Request": ("request", full_name),
+                              name + "Response": ("response", full_name)})
+    return table
+
+
+def _resolve(what: str, full_name: str) -> type:
+    if what == "msg":
+        return message_class(full_name)
+    srv = service_class(full_name)
+    return {"srv": srv, "request": srv._request_class, "response": srv._response_class}[what]
+
+
+def lazy_exports(package_module: str) -> tuple[Callable[[str], type], Callable[[], list[str]], list[str]]:
+    """``(__getattr__, __dir__, __all__)`` for a package module: each class is built on first use (a node imports
+    a package for one or two of its classes; building them all cost tens of milliseconds per node start), then kept
+    in the module. Also registers genpy's ``<package_module>._Name`` submodules, equally lazy."""
+    table = _exports(package_module)
+    package = sys.modules[package_module]
+
+    def module_getattr(name: str) -> type:
+        try:
+            what, full_name = table[name]
+        except KeyError:
+            raise AttributeError(f"module {package_module!r} has no attribute {name!r}") from None
+        cls = _resolve(what, full_name)
+        setattr(package, name, cls)
+        return cls
+
+    stems: dict[str, list[str]] = {}
+    for name, (_, full_name) in table.items():
+        stems.setdefault(full_name.split("/")[1], []).append(name)
+    for stem, names in stems.items():
         module = types.ModuleType("%s._%s" % (package_module, stem))
-        for cls in classes:
-            setattr(module, cls.__name__, cls)
-            names[cls.__name__] = cls
+        module.__getattr__ = _submodule_getattr(module, frozenset(names), module_getattr)  # type: ignore[method-assign]
         sys.modules.setdefault(module.__name__, module)
-    return names
+    names = sorted(table)
+    return module_getattr, lambda: sorted(set(names) | set(vars(package))), names
+
+
+def _submodule_getattr(module: types.ModuleType, names: frozenset[str],
+                       package_getattr: Callable[[str], type]) -> Callable[[str], type]:
+    def submodule_getattr(name: str) -> type:
+        if name not in names:
+            raise AttributeError(f"module {module.__name__!r} has no attribute {name!r}")
+        cls = package_getattr(name)
+        setattr(module, name, cls)
+        return cls
+    return submodule_getattr

@@ -4,7 +4,6 @@ from __future__ import annotations
 import copy
 import json
 import re
-import xmlrpc.client
 
 import rosgrade_channel as ch
 import rosgrade_params
@@ -63,6 +62,7 @@ def parse_scalar(text: str):
 def _as_master_stores(value):
     """The value as it comes back from rosmaster: sent over XML-RPC, so a tuple reads back as a list and None or
     an object XML-RPC cannot carry raises its TypeError."""
+    import xmlrpc.client  # here, not at import: it pulls in http and email, ~40 ms of every node's start-up
     return xmlrpc.client.loads(xmlrpc.client.dumps((value,)))[0][0]
 
 

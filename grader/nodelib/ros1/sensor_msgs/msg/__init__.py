@@ -1,5 +1,4 @@
-"""sensor_msgs message classes, built from genpy._msgdefs so every import path yields the same class objects."""
-from genpy._builder import export as _export
+"""sensor_msgs message classes, built from genpy._msgdefs on first use (the same objects by any import path)."""
+from genpy._builder import lazy_exports as _lazy_exports
 
-globals().update(_export(__name__))
-__all__ = sorted(name for name in globals() if not name.startswith("_"))
+__getattr__, __dir__, __all__ = _lazy_exports(__name__)

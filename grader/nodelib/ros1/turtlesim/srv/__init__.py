@@ -1,5 +1,4 @@
 """turtlesim service classes (Name, NameRequest, NameResponse), built from genpy._msgdefs."""
-from genpy._builder import export as _export
+from genpy._builder import lazy_exports as _lazy_exports
 
-globals().update(_export(__name__))
-__all__ = sorted(name for name in globals() if not name.startswith("_"))
+__getattr__, __dir__, __all__ = _lazy_exports(__name__)
