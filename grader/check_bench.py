@@ -18,7 +18,7 @@ from grader.batch import grade_one
 
 # Stages in the order a check goes through them (timing.py names); anything else is listed after them.
 STAGE_ORDER = (
-    "node start-up", "world set-up (model compile)", "physics and sensors", "world messages (encode, record, queue)",
+    "node start-up", "world set-up (model, run to the start)", "physics and sensors", "world messages (encode, record, queue)",
     "node steps (channel, node publications)", "waiting for nodes", "stopping nodes", "reading recordings",
     "scoring", "advice", "plots", "report files",
 )

@@ -136,7 +136,7 @@ class Session:
             with timing.stage("node start-up", absorb=True):
                 for index, node_spec in enumerate(self.spec.nodes):
                     self._spawn(node_spec, workroot / f"node{index}")
-            with timing.stage("world set-up (model compile)"):
+            with timing.stage("world set-up (model, run to the start)"):
                 self.world = open_world(self.spec.scenario)
             self._take_declarations()
         except BaseException:
