@@ -1,9 +1,9 @@
 """Plots that show a beginner what their robot did: path against the ideal shape, commands against limits, printed pose."""
 from __future__ import annotations
 
-import io
 import json
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -14,8 +14,10 @@ from matplotlib.figure import Figure
 from grader.metrics.run import RunData, Trajectory, param_changes, service_calls, turtle_poses
 from grader.report import SubmissionReport
 from grader.reports.canvas import canvas_figure
+from grader.reports.figures import Figures, level_changes, png, thin
 from sim.scenario import TURTLESIM
 
+DPI = 90  # the figures' natural size fits the HTML report's column
 IDEAL_RADIUS_M = 0.5
 SQUARE_SIDE_M = 1.0
 # Course limits from the robots' teleop nodes (linear m/s, angular rad/s); unknown robots get no limit lines.
@@ -26,6 +28,11 @@ ROBOT_LIMITS = {
 }
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _LABELLED = {axis: re.compile(rf"\b{axis}\s*[=:]\s*({_NUMBER})", re.IGNORECASE) for axis in ("x", "y")}
+# Figure sizes (inches) and fixed margins: tight_layout's choice for the usual tick labels, which it cost more to
+# compute each time than drawing the plot did (a y label pushed off the edge widens the left margin).
+PATH_SIZE_IN, PATH_MARGINS = (5.2, 5.0), {"left": 0.15, "right": 0.96, "bottom": 0.117, "top": 0.965}
+SERIES_SIZE_IN, SERIES_MARGINS = (7.0, 4.2), {"left": 0.11, "right": 0.975, "bottom": 0.139, "top": 0.955,
+                                              "hspace": 0.2}
 
 
 @dataclass(frozen=True)
@@ -55,7 +62,7 @@ def shape_for(task_id: str) -> str | None:
     return None
 
 
-def report_plots(report: SubmissionReport, dpi: int = 90) -> tuple[list[Plot], list[str]]:
+def report_plots(report: SubmissionReport, dpi: int = DPI) -> tuple[list[Plot], list[str]]:
     """Plots for every recording of a report, and a note for each recording that could not be read."""
     plots: list[Plot] = []
     notes: list[str] = []
@@ -63,45 +70,53 @@ def report_plots(report: SubmissionReport, dpi: int = 90) -> tuple[list[Plot], l
         return plots, notes
     from grader.recording import Recording, RecordingError
 
+    figures = Figures(dpi)  # built once, refilled for every recording
     for task in report.tasks:
         for path in task.recordings:
             try:
                 recording = Recording.open(Path(path))
-                plots.extend(task_plots(task.id, Path(path).stem, recording, dpi=dpi))
+                plots.extend(task_plots(task.id, Path(path).stem, recording, dpi=dpi, figures=figures))
             except RecordingError as exc:
                 notes.append(f"{task.id}: could not plot {Path(path).name}: {exc}")
     return plots, notes
 
 
-def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = 90) -> list[Plot]:
+def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = DPI,
+               figures: Figures | None = None) -> list[Plot]:
     """The figures for one recording: the turtlesim window (turtlesim runs), path, commands, and printed pose for
-    printing tasks."""
+    printing tasks. `figures` lets the recordings of one report share their figures."""
     plots = []
+    figures = figures if figures is not None else Figures(dpi)
     metadata = recording.metadata or {}
     turtlesim = _record(metadata, "rosgrade").get("robot") == TURTLESIM
     kind = None if turtlesim else shape_for(task_id)  # the ideal shapes are the TurtleBot tasks'
     truth = recording.ground_truth()
-    odom = None if turtlesim else recording.odometry()  # turtlesim has no nav_msgs/Odometry: its truth is exact
-    path = truth if truth is not None and len(truth.t) else odom
+    has_truth = truth is not None and len(truth.t) > 0
+    # /odom is read only where it is shown; turtlesim has no nav_msgs/Odometry: its truth is exact
+    odom = None if turtlesim or (has_truth and kind != "printed") else recording.odometry()
+    path = truth if has_truth else odom
     stop_s = shutdown_s(metadata)
     if turtlesim and path is not None and len(path.t):
         figure = canvas_figure(RunData(odometry=Trajectory.of(path.t, path.x, path.y, path.yaw),
                                        poses=turtle_poses(recording), service_calls=service_calls(recording),
                                        param_changes=param_changes(recording)))
         plots.append(Plot(task_id, scenario, "canvas", f"{task_id} ({scenario}): the turtlesim window at the end",
-                          _png(figure, dpi)))
+                          png(figure, dpi)))
     if path is not None and len(path.t):
-        figure = _path_figure(path, kind, has_truth=path is truth, stop_s=stop_s)
-        plots.append(Plot(task_id, scenario, "path", f"{task_id} ({scenario}): driven path", _png(figure, dpi)))
+        figure = _path_figure(path, kind, has_truth=path is truth, stop_s=stop_s, figures=figures)
+        plots.append(Plot(task_id, scenario, "path", f"{task_id} ({scenario}): driven path", png(figure, dpi)))
     commands = recording.commands()
     if commands is not None and len(commands.t):
-        figure = _command_figure(commands, _limits(metadata), stop_s, path if path is not None and len(path.t) else None)
-        plots.append(Plot(task_id, scenario, "commands", f"{task_id} ({scenario}): velocity commands", _png(figure, dpi)))
+        shown_path = path if path is not None and len(path.t) else None
+        figure = _command_figure(commands, _limits(metadata), stop_s, shown_path, figures=figures)
+        plots.append(Plot(task_id, scenario, "commands", f"{task_id} ({scenario}): velocity commands",
+                          png(figure, dpi)))
     if kind == "printed" and odom is not None and len(odom.t):
         printed = printed_positions(recording.output_lines())
         if len(printed):
-            figure = _printed_figure(printed, odom)
-            plots.append(Plot(task_id, scenario, "printed", f"{task_id} ({scenario}): printed vs true pose", _png(figure, dpi)))
+            figure = _printed_figure(printed, odom, figures=figures)
+            plots.append(Plot(task_id, scenario, "printed", f"{task_id} ({scenario}): printed vs true pose",
+                              png(figure, dpi)))
     return plots
 
 
@@ -163,77 +178,84 @@ def _ideal_outline(kind: str | None, path: Any) -> tuple[np.ndarray, np.ndarray,
     return None
 
 
-def _path_figure(path: Any, kind: str | None, has_truth: bool, stop_s: float | None = None) -> Figure:
-    """The whole recorded path; what the robot did after Ctrl+C in another colour, from a marked Ctrl+C point."""
-    figure = Figure(figsize=(5.2, 5.0))
+def _build_path(figure: Figure) -> None:
     axes = figure.add_subplot()
+    axes.set_aspect("equal", adjustable="datalim")
+    axes.set_xlabel("x [m]")
+    axes.set_ylabel("y [m]")
+    axes.grid(True, alpha=0.3)
+    figure.subplots_adjust(**PATH_MARGINS)
+
+
+def _path_figure(path: Any, kind: str | None, has_truth: bool, stop_s: float | None = None,
+                 figures: Figures | None = None) -> Figure:
+    """The whole recorded path; what the robot did after Ctrl+C in another colour, from a marked Ctrl+C point."""
+    figures = figures or Figures(DPI)
+    figure = figures.get("path", _build_path, PATH_SIZE_IN)
+    axes = figure.axes[0]
     source = "true path (simulator)" if has_truth else "path from /odom"
     t = np.asarray(path.t)
     cut = len(t) if stop_s is None else int(np.searchsorted(t, stop_s, side="right"))
-    axes.plot(path.x[:max(cut, 1)], path.y[:max(cut, 1)], color="tab:blue", lw=1.8, label=source)
+    axes.plot(*thin(path.x[:max(cut, 1)], path.y[:max(cut, 1)], axes, equal_aspect=True), color="tab:blue", lw=1.8,
+              label=source)
     if 0 < cut < len(t):
-        axes.plot(path.x[cut - 1:], path.y[cut - 1:], color="tab:orange", lw=1.8, label="after Ctrl+C")
+        axes.plot(*thin(path.x[cut - 1:], path.y[cut - 1:], axes, equal_aspect=True), color="tab:orange", lw=1.8,
+                  label="after Ctrl+C")
         axes.plot(path.x[cut - 1], path.y[cut - 1], "X", color="tab:purple", ms=9, label="Ctrl+C")
     outline = _ideal_outline(kind, path)
     if outline is not None:  # drawn over the path so it stays visible where the two coincide
         axes.plot(outline[0], outline[1], "--", color="tab:green", lw=1.5, label=outline[2])
     axes.plot(path.x[-1], path.y[-1], "s", color="tab:red", ms=7, label="end")
     axes.plot(path.x[0], path.y[0], "o", mfc="none", mec="tab:green", mew=2, ms=12, label="start")
-    axes.set_aspect("equal", adjustable="datalim")
-    axes.set_xlabel("x [m]")
-    axes.set_ylabel("y [m]")
-    axes.grid(True, alpha=0.3)
-    axes.legend(loc="best", fontsize=8)
-    figure.tight_layout()
+    figures.legends.add(axes, fontsize=8)
     return figure
 
 
+def _series_builder(y_labels: tuple[str, str]) -> Callable[[Figure], None]:
+    """Builds two time-series axes sharing their time axis, with these y labels."""
+    def build(figure: Figure) -> None:
+        pair = figure.subplots(2, 1, sharex=True)
+        for axes, label in zip(pair, y_labels):
+            axes.set_ylabel(label)
+            axes.grid(True, alpha=0.3)
+        pair[1].set_xlabel("time [s]")
+        figure.subplots_adjust(**SERIES_MARGINS)
+    return build
+
+
 def _command_figure(commands: Any, limits: tuple[float, float] | None, stop_s: float | None,
-                    path: Any = None) -> Figure:
+                    path: Any = None, figures: Figures | None = None) -> Figure:
     """Commands against the limits and, over the whole recording, the speed the robot really had (so a robot that
     keeps moving after Ctrl+C, when commands have stopped, shows)."""
-    figure = Figure(figsize=(7.0, 4.2))
-    linear_axes, angular_axes = figure.subplots(2, 1, sharex=True)
+    figures = figures or Figures(DPI)
+    figure = figures.get("commands", _series_builder(("linear.x [m/s]", "angular.z [rad/s]")), SERIES_SIZE_IN)
+    linear_axes, angular_axes = figure.axes
     series = (
-        (linear_axes, np.asarray(commands.linear)[:, 0], "linear.x [m/s]", 0, None if path is None else path.vx),
-        (angular_axes, np.asarray(commands.angular)[:, 2], "angular.z [rad/s]", 1, None if path is None else path.wz),
+        (linear_axes, np.asarray(commands.linear)[:, 0], 0, None if path is None else path.vx),
+        (angular_axes, np.asarray(commands.angular)[:, 2], 1, None if path is None else path.wz),
     )
-    for axes, values, label, limit_index, actual in series:
+    for axes, values, limit_index, actual in series:
         if actual is not None:
-            axes.plot(path.t, actual, color="tab:gray", lw=1.0, label="robot's actual speed")
-        axes.step(commands.t, values, where="post", color="tab:blue", lw=1.5, label="commanded")
+            axes.plot(*thin(path.t, actual, axes), color="tab:gray", lw=1.0, label="robot's actual speed")
+        axes.step(*level_changes(commands.t, values), where="post", color="tab:blue", lw=1.5, label="commanded")
         if limits is not None:
             limit = limits[limit_index]
             axes.axhline(limit, color="tab:red", ls="--", lw=1, label=f"limit ±{limit:g}")
             axes.axhline(-limit, color="tab:red", ls="--", lw=1)
         if stop_s is not None:
             axes.axvline(stop_s, color="tab:purple", ls=":", lw=1.5, label="Ctrl+C (shutdown)")
-        axes.set_ylabel(label)
-        axes.grid(True, alpha=0.3)
-    linear_axes.legend(loc="best", fontsize=8)
-    angular_axes.set_xlabel("time [s]")
-    figure.tight_layout()
+    figures.legends.add(linear_axes, fontsize=8)
     return figure
 
 
-def _printed_figure(printed: np.ndarray, odom: Any) -> Figure:
-    figure = Figure(figsize=(7.0, 4.2))
-    axes_pair = figure.subplots(2, 1, sharex=True)
-    for axes, values, column, label in zip(axes_pair, (odom.x, odom.y), (1, 2), ("x [m]", "y [m]")):
-        axes.plot(odom.t, values, color="tab:blue", lw=1.5, label="pose on /odom")
+def _printed_figure(printed: np.ndarray, odom: Any, figures: Figures | None = None) -> Figure:
+    figures = figures or Figures(DPI)
+    figure = figures.get("printed", _series_builder(("x [m]", "y [m]")), SERIES_SIZE_IN)
+    for axes, values, column in zip(figure.axes, (odom.x, odom.y), (1, 2)):
+        axes.plot(*thin(odom.t, values, axes), color="tab:blue", lw=1.5, label="pose on /odom")
         axes.plot(printed[:, 0], printed[:, column], "o", color="tab:orange", ms=4, label="your printed value")
-        axes.set_ylabel(label)
-        axes.grid(True, alpha=0.3)
-    axes_pair[0].legend(loc="best", fontsize=8)
-    axes_pair[1].set_xlabel("time [s]")
-    figure.tight_layout()
+    figures.legends.add(figure.axes[0], fontsize=8)
     return figure
-
-
-def _png(figure: Figure, dpi: int) -> bytes:
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=dpi)
-    return buffer.getvalue()
 
 
 def _record(metadata: dict[str, Any], name: str) -> dict[str, Any]:
