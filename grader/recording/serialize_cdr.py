@@ -245,3 +245,26 @@ def decode_twist_stamped_cdr(data: bytes | bytearray | memoryview) -> tuple[Vec3
     except struct.error:
         raise RecordingError(f"{len(data)} bytes are not a geometry_msgs/msg/TwistStamped message") from None
     return (v[0], v[1], v[2]), (v[3], v[4], v[5])
+
+
+_ODOMETRY_HEAD = struct.Struct("<4xiII")  # encapsulation, stamp sec and nanosec, frame_id length
+_ODOMETRY_BODY = struct.Struct("<85d")  # pose 7 + covariance 36 + twist 6 + covariance 36
+
+
+def decode_odometry_pose_twist_cdr(data: bytes | bytearray | memoryview) -> tuple[int, tuple[float, ...], Vec3, Vec3]:
+    """(stamp ns, pose x y z qx qy qz qw, linear, angular) of nav_msgs/msg/Odometry CDR bytes, checking the exact
+    length (serialize.decode_odometry_pose_twist's twin)."""
+    try:
+        sec, nanosec, length = _ODOMETRY_HEAD.unpack_from(data, 0)
+        pos = 16 + length
+        pos += -(pos - 4) % 4
+        (child,) = _U32.unpack_from(data, pos)
+        pos += 4 + child
+        pos += -(pos - 4) % 8
+        if pos + _ODOMETRY_BODY.size != len(data):
+            raise struct.error("length")
+        v = _ODOMETRY_BODY.unpack_from(data, pos)
+    except struct.error:
+        raise RecordingError(f"{len(data)} bytes are not a nav_msgs/msg/Odometry message") from None
+    return sec * _NS + nanosec, v[0:7], (v[43], v[44], v[45]), (v[46], v[47], v[48])
+

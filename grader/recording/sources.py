@@ -55,6 +55,13 @@ class Source:
     metadata: dict[str, dict[str, str]] = field(default_factory=dict)
     truncated: str | None = None
 
+    def definition(self, channel: ChannelInfo) -> str | None:
+        """The file's own ``ros2msg`` text for the channel's type (None if the type store cannot give it)."""
+        try:
+            return self.typestore.generate_msgdef(channel.store_type, ros_version=2)[0]
+        except Exception:  # noqa: BLE001 - a type the file defines oddly is simply not taken on the fast path
+            return None
+
     def deserialize(self, data: bytes, channel: ChannelInfo) -> object:
         """Decode one payload with the file's types; RecordingError naming the topic when it does not parse."""
         try:

@@ -122,3 +122,17 @@ def test_decode_twist_cdr_round_trips_and_rejects_wrong_length() -> None:
     assert cdr.decode_twist_cdr(data) == ((0.5, 0.0, 0.0), (0.0, 0.0, 1.0))
     with pytest.raises(RecordingError, match="it has 52"):
         cdr.decode_twist_cdr(data[:-1])
+
+
+def test_decode_odometry_cdr_reads_what_odometry_cdr_wrote(run: Run) -> None:
+    for sample in run.odometry[:50]:
+        t_ns, pose, linear, angular = cdr.decode_odometry_pose_twist_cdr(cdr.odometry_cdr(sample, 0))
+        assert (t_ns, pose, linear, angular) == (sample.t_ns, (*sample.position, *sample.orientation), sample.linear,
+                                                 sample.angular)
+
+
+def test_decode_odometry_cdr_rejects_a_wrong_length(run: Run) -> None:
+    data = cdr.odometry_cdr(run.odometry[0], 0)
+    for bad in (data[:-1], data + bytes(8), data[:20]):
+        with pytest.raises(RecordingError, match="nav_msgs/msg/Odometry"):
+            cdr.decode_odometry_pose_twist_cdr(bad)
