@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import json
-import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -11,7 +10,8 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
-from grader.metrics.run import RunData, Trajectory, param_changes, service_calls, turtle_poses
+from grader.metrics.pose_print import pose_lines
+from grader.metrics.run import OutputLine, RunData, Trajectory, param_changes, service_calls, turtle_poses
 from grader.report import SubmissionReport
 from grader.reports.canvas import canvas_figure
 from grader.reports.figures import Figures, level_changes, png, thin
@@ -26,8 +26,6 @@ ROBOT_LIMITS = {
     "turtlebot3_waffle": (0.26, 1.82),
     "turtlebot3_waffle_pi": (0.26, 1.82),
 }
-_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-_LABELLED = {axis: re.compile(rf"\b{axis}\s*[=:]\s*({_NUMBER})", re.IGNORECASE) for axis in ("x", "y")}
 # Figure sizes (inches) and fixed margins: tight_layout's choice for the usual tick labels, which it cost more to
 # compute each time than drawing the plot did (a y label pushed off the edge widens the left margin).
 PATH_SIZE_IN, PATH_MARGINS = (5.2, 5.0), {"left": 0.15, "right": 0.96, "bottom": 0.117, "top": 0.965}
@@ -121,17 +119,10 @@ def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = DPI,
 
 
 def printed_positions(lines: list[tuple[float, str, str]]) -> np.ndarray:
-    """(t, x, y) rows parsed from printed lines: `x=.. y=..` labels, else lines holding exactly 2 or 3 numbers."""
-    rows = []
-    for t, _stream, text in lines:
-        labelled = [_LABELLED[axis].search(text) for axis in ("x", "y")]
-        if all(labelled):
-            rows.append((t, float(labelled[0].group(1)), float(labelled[1].group(1))))
-            continue
-        numbers = re.findall(_NUMBER, text)
-        if len(numbers) in (2, 3):
-            rows.append((t, float(numbers[0]), float(numbers[1])))
-    return np.array(rows, dtype=float).reshape(-1, 3)
+    """(t, x, y) rows of the poses the node printed, read as the pose_print metric reads them (the stream that
+    printed most of them; console prefixes with their wall and sim times are not poses)."""
+    poses = pose_lines(tuple(OutputLine(*line) for line in lines))
+    return np.array([(p.t, p.x, p.y) for p in poses], dtype=float).reshape(-1, 3)
 
 
 def fit_circle_centre(x: np.ndarray, y: np.ndarray) -> tuple[float, float] | None:

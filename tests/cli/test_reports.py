@@ -87,6 +87,12 @@ def test_printed_positions_are_parsed_from_labelled_or_plain_lines():
     assert rows.tolist() == [[1.0, 0.5, -1.25], [2.0, 0.1, 0.2]]
 
 
+def test_printed_positions_skip_the_console_prefix_s_times():
+    line = "[INFO] [1700000000.100000, 0.000000]: The 'odom_subscriber' node is active..."
+    rows = printed_positions([(0.0, "stdout", line), (1.0, "stdout", "(x,y,θz) = (0.500, -0.200, 1.571)")])
+    assert rows.tolist() == [[1.0, 0.5, -0.2]]
+
+
 def test_circle_task_gets_path_and_command_plots():
     plots = task_plots("move_circle", "nominal", fakes.FakeRecording(Path("x.mcap")))
     assert [p.name for p in plots] == ["path", "commands"]
