@@ -155,3 +155,17 @@ def test_exceptions_and_init_errors():
     assert repr(rospy.Time(5, 2500)) == "rospy.Time[5000002500]" and str(rospy.Time(1, 500000000)) == "1500000000"
     assert type(rospy.Time(10) - rospy.Time(8, 5)).__name__ == "Duration"
     assert type(rospy.Time(10) + rospy.Duration(1.5)) is rospy.Time
+
+
+def test_every_client_library_s_frames_count_as_library_code():
+    """The CPU-time tick and Ctrl+C act only in student code: rospy's, rclpy's and the runtime's own frames are
+    library frames (a tick that yielded inside rospy, holding one of its locks, could hang the node)."""
+    from rosgrade_node import scheduler
+
+    from grader.nodelib import NODELIB, import_roots
+
+    assert str(NODELIB) + "/" in scheduler._LIBRARY_DIRS
+    for root in (*import_roots("ros1"), *import_roots("ros2")):
+        assert str(root / "x.py").startswith(scheduler._LIBRARY_DIRS)
+    assert rospy.__file__.startswith(scheduler._LIBRARY_DIRS)
+    assert not str(NODELIB.parents[1] / "reference_solutions" / "move_circle.py").startswith(scheduler._LIBRARY_DIRS)

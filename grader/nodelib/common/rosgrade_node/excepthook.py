@@ -9,13 +9,12 @@ import traceback
 import rosgrade_channel as ch
 
 from . import runtime
+from .scheduler import NODELIB_DIR  # none of its frames are the student's
 
-# nodelib/, which holds common/ and every client library's root: none of its frames are the student's.
-_NODELIB_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))) + os.sep
 
 
 def _is_student_frame(filename: str) -> bool:
-    return not (filename.startswith(_NODELIB_DIR) or filename.startswith("<frozen")
+    return not (filename.startswith(NODELIB_DIR) or filename.startswith("<frozen")
                 or os.path.basename(filename) == "runpy.py")
 
 

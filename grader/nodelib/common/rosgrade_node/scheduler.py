@@ -24,8 +24,10 @@ import rosgrade_params
 from .link import Link
 
 # Code in these directories is library code: a CPU-time tick that lands in it never yields (see on_cpu_tick).
+# nodelib/ (common/ and every client library's root: rospy's and rclpy's frames are library frames too).
+NODELIB_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))) + os.sep
 _LIBRARY_DIRS = tuple(
-    {os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep}
+    {NODELIB_DIR}
     | {os.path.join(p, "") for key in ("stdlib", "platstdlib", "purelib", "platlib")
        if (p := sysconfig.get_paths().get(key))})
 
