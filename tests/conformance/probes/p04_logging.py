@@ -45,8 +45,11 @@ def helper(i):
     rospy.loginfo_throttle(0.5, "via helper %d" % i)
 
 
+# Start the loop on the first clock tick at or after T0 + 0.1, however long the lines above took (real rospy
+# on a slow machine can spend more than one 10 ms tick on them).
+while rospy.get_time() < T0 + 0.1 - 1e-6:
+    rospy.sleep(0.001)
 r = rospy.Rate(10)
-r.sleep()  # start the loop right after a clock tick
 for i in range(21):
     rospy.loginfo_throttle(0.5, "throttle %d" % i)
     rospy.loginfo_throttle(0.5, "A%d" % i); rospy.loginfo_throttle(0.5, "B%d" % i)
