@@ -441,7 +441,7 @@ def _print_checks(console: Console, checks: list[Any], physics: dict[str, Any]) 
     console.print(stages)
     summary = Table(title=f"graded sim-s per second against physics alone ({physics['rtf']:.0f}x real time, "
                           "same run)")
-    for column in ("-j", "Wall [s]", "CPU [s]", "Sim-s / wall-s", "Of physics RTF", "Sim-s / CPU-s",
+    for column in ("-j", "Wall [s]", "Machine CPU [s]", "Sim-s / wall-s", "Of physics RTF", "Sim-s / CPU-s",
                    "Of physics per CPU-s", "Points"):
         summary.add_column(column, justify="right")
     cpu_rtf = physics.get("cpu_rtf")

@@ -22,6 +22,8 @@ class _Sensor:
     """What every sensor has: the topic it publishes on."""
 
     _topic: str
+    # Whether a sample depends on an earlier one: such a sensor must observe its last sample time even unheard.
+    keeps_state = False
 
     @property
     def topic(self) -> str:
@@ -38,6 +40,8 @@ class Imu(_Sensor):
     into the body frame, so a robot at rest reads +9.81 m/s² on z, as an accelerometer does. It samples at 200 Hz on
     a TurtleBot3, so ``sample`` is plain float arithmetic on the lists the world reads once per tick.
     """
+
+    keeps_state = True
 
     def __init__(self, config: ImuConfig, model: mujoco.MjModel, t_ns: int, qvel: Sequence[float]) -> None:
         self._topic, self._frame_id = config.topic, config.frame_id

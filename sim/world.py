@@ -68,6 +68,16 @@ class _StartState:
 _start_states: OrderedDict[str, _StartState] = OrderedDict()  # least recently used first
 
 
+@dataclass(frozen=True)
+class _Schedule:
+    """The ticks of one set of heard sensors, repeating every ``cycle`` steps."""
+
+    cycle: int
+    to_next_tick: list[int]  # for each step of the cycle, the steps to the next tick
+    plan: list[Tick]  # what is due on each step of the cycle
+    unheard: tuple[tuple[int, Sensor], ...]  # (period, sensor) of the unheard sensors that keep state
+
+
 class World(ScenarioTimes):
     """One run of a robot: ``command`` it, ``advance_to`` a time, collect the samples it published on the way."""
 
@@ -135,11 +145,8 @@ class World(ScenarioTimes):
             if p is not None
         )
         self._topic_periods = {topic.topic: steps_per_tick(topic.rate_hz) for topic in self.publications}
-        # The ticks repeat every `cycle` steps: precompute, for each step in the cycle, the distance to the next tick.
-        self._cycle = math.lcm(self._control_every, *self._output_periods)
-        ticks = [r for r in range(self._cycle) if any(r % p == 0 for p in (self._control_every, *self._output_periods))]
-        self._to_next_tick = [next((t for t in ticks if t > r), self._cycle) - r for r in range(self._cycle)]
-        self._plan = [self._due_at(r) for r in range(self._cycle)]
+        self._schedules: dict[tuple[int, ...], _Schedule] = {}
+        self._schedule = self._schedule_for(self._sensors)
 
         start_ns = scenario.start_ns
         self._script = [(start_ns + command.t_ns, command) for command in scenario.script]
@@ -225,6 +232,8 @@ class World(ScenarioTimes):
         cost more to encode and record than the physics costs to run; the session names what its nodes subscribe to.
         Odometry, /tf and ground truth are always published."""
         self._listened = None if topics is None else frozenset(topics)
+        self._schedule = self._schedule_for([(p, sensor) for p, sensor in self._sensors
+                                             if self._listened is None or sensor.topic in self._listened])
 
     def advance_to(self, t_ns: int) -> list[Sample]:
         """Step physics to ``t_ns``; return the samples due in (previous time, ``t_ns``], in time order."""
@@ -285,20 +294,45 @@ class World(ScenarioTimes):
         return _StartState(data, copy.copy(self._latch), copy.copy(self._driver), copy.copy(self._odometry),
                            copy.copy(imu), self._k, self._time_ns, self._command, self._wheel_targets, self._estimate)
 
-    def _due_at(self, r: int) -> Tick:
+    def _schedule_for(self, sensors: list[tuple[int, Sensor]]) -> _Schedule:
+        """The ticks with these sensors sampled (the others unheard), cached by which sensors they are."""
+        key = tuple(i for i, entry in enumerate(self._sensors) if entry in sensors)
+        if key not in self._schedules:
+            periods = [p for p in (self._control_every, self._odometry_every, self._tf_every, self._truth_every)
+                       if p is not None] + [p for p, _ in sensors]
+            # The ticks repeat every `cycle` steps: for each step in the cycle, the distance to the next tick.
+            cycle = math.lcm(*periods)
+            ticks = [r for r in range(cycle) if any(r % p == 0 for p in periods)]
+            to_next = [next((t for t in ticks if t > r), cycle) - r for r in range(cycle)]
+            plan = [self._due_at(r, sensors) for r in range(cycle)]
+            unheard = tuple(entry for entry in self._sensors if entry not in sensors and entry[1].keeps_state)
+            self._schedules[key] = _Schedule(cycle, to_next, plan, unheard)
+        return self._schedules[key]
+
+    def _due_at(self, r: int, sensors: list[tuple[int, Sensor]]) -> Tick:
         """What is due on a step ``r`` (mod the cycle) after the start of a cycle."""
         return (r % self._control_every == 0, r % self._odometry_every == 0,
                 self._tf_every is not None and r % self._tf_every == 0, r % self._truth_every == 0,
-                tuple(sensor for period, sensor in self._sensors if r % period == 0))
+                tuple(sensor for period, sensor in sensors if r % period == 0))
 
     def _run(self, t_ns: int, out: list[Sample], emit: bool) -> None:
-        """Process every event up to ``t_ns``: scripted commands first, then physics, then that step's ticks."""
+        """Process every event up to ``t_ns``: scripted commands first, then physics, then that step's ticks.
+
+        An unheard sensor with state (the IMU) is not ticked at its rate: only its last sample time up to ``t_ns``
+        matters, since the next sample someone hears differentiates against that one, so physics stops there."""
         last = last_step_at(t_ns)
-        model, data, to_next_tick, cycle = self.model, self.data, self._to_next_tick, self._cycle
+        schedule = self._schedule
+        model, data, to_next_tick, cycle = self.model, self.data, schedule.to_next_tick, schedule.cycle
         emitted = out if emit else None
         k = self._k
+        observe = sorted(((last // p) * p, sensor) for p, sensor in schedule.unheard if (last // p) * p > k)
         while True:
             tick = k + to_next_tick[k % cycle]
+            while observe and observe[0][0] < tick:
+                at, sensor = observe.pop(0)
+                mujoco.mj_step(model, data, nstep=at - k)
+                self._k = k = at
+                sensor.observe(step_ns(at), self._qvel.tolist())
             if tick > last:
                 break
             tick_ns = step_ns(tick)
@@ -307,6 +341,8 @@ class World(ScenarioTimes):
             mujoco.mj_step(model, data, nstep=tick - k)
             self._k = k = tick
             self._tick(k, tick_ns, emitted)
+            while observe and observe[0][0] == tick:
+                observe.pop(0)[1].observe(tick_ns, self._qvel.tolist())
         if last > k:
             mujoco.mj_step(model, data, nstep=last - k)
             self._k = last
@@ -327,7 +363,7 @@ class World(ScenarioTimes):
     def _tick(self, k: int, t_ns: int, out: list[Sample] | None) -> None:
         """The driver, odometry, /tf, ground-truth and sensor ticks on step ``k`` (at ``t_ns``); samples go to ``out``
         unless None."""
-        control, odometry, tf, truth, sensors = self._plan[k % self._cycle]
+        control, odometry, tf, truth, sensors = self._schedule.plan[k % self._schedule.cycle]
         if control:
             self._command = self._latch.command_at(t_ns)
             rims = self._driver.tick(*self._command)
@@ -350,7 +386,7 @@ class World(ScenarioTimes):
                 g = ground_truth(qpos, qvel)
                 out.append(GroundTruthSample(t_ns, *self._truth_names, g.position, g.orientation, g.linear, g.angular))
         for sensor in sensors:
-            if out is not None and (self._listened is None or sensor.topic in self._listened):
+            if out is not None:
                 out.append(sensor.sample(t_ns, qpos, qvel))
             else:
                 sensor.observe(t_ns, qvel)  # the IMU differentiates velocity: it keeps its state unheard

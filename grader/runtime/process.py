@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from grader.runtime import confine
-from grader.nodelib import COMMON, pythonpath
+from grader.nodelib import COMMON, precompile, pythonpath
 from grader.runtime.spec import Limits, NodeSpec
 
 try:
@@ -136,6 +136,7 @@ class NodeProcess:
     def __init__(self, spec: NodeSpec, workdir: Path, raw_output: Path, limits: Limits) -> None:
         self.limits = limits
         self.marker = marker_prefix() + secrets.token_hex(8)
+        precompile()
         self.peak_tasks = 0  # processes + threads seen in the node's sandbox when it was killed
         workdir.mkdir(parents=True, exist_ok=True)
         script = Path(os.path.abspath(spec.script))

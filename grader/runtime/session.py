@@ -22,6 +22,7 @@ from grader import __version__, timing
 from grader.nodelib.common import rosgrade_channel as ch
 from grader.recording import Recorder
 from grader.runtime import confine
+from grader.runtime.cpu_claim import one_cpu
 from grader.runtime.diagnostics import diagnose, topic_summary
 from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
                                       NodeSilent, OutputLine, ParamChange, ProtocolViolation, Publication, ServiceCall,
@@ -673,4 +674,5 @@ def _remove_stale_workroots() -> None:
 
 def run(spec: RunSpec, recording: Path, log: Path) -> RunResult:
     """Run the scenario with its nodes, write the recording and the node log, and report what happened."""
-    return Session(spec, recording, log).run()
+    with one_cpu():
+        return Session(spec, recording, log).run()

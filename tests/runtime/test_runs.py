@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import hashlib
+import os
 import multiprocessing
 from pathlib import Path
 
@@ -162,3 +163,12 @@ def test_run_metadata_records_exit_and_shutdown(tmp_path):
     commands = rec.commands()
     assert commands.vx[-1] == 0.0 and commands.t[-1] == pytest.approx(scenario.start_time + 5.0)
     assert np.all(commands.t[:-1] < scenario.start_time + 5.0)
+
+
+def test_the_node_runs_on_its_runs_cpu_but_sees_four(tmp_path):
+    result, _ = run_node(tmp_path, NODES / "cpu_view.py", Scenario(duration=1.0))
+    log = (tmp_path / "run.log").read_text()
+    assert "sees 4 4 [0, 1, 2, 3]" in log
+    kernel = next(line.split("kernel ")[1] for line in log.splitlines() if "kernel " in line)
+    if len(os.sched_getaffinity(0)) >= 2:
+        assert kernel.isdigit(), f"the node may use CPUs {kernel}, not the one its run claimed"

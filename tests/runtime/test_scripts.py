@@ -71,3 +71,4 @@ def test_find_script_skips_build_and_hidden_folders(tmp_path):
 def test_find_script_accepts_a_single_file(tmp_path):
     script = write(tmp_path / "move_circle.py", GOOD)
     assert find_script(script, "move_circle.py") == (script, [])
+

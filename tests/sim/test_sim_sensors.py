@@ -135,3 +135,47 @@ def test_obstacles_stop_the_robot():
 def test_obstacle_needs_its_kind():
     with pytest.raises(ValueError, match="kind"):
         Scenario(obstacles=[{"x": 1.0, "y": 0.0, "radius": 0.1}])
+
+
+# -- sensors nobody listens to -------------------------------------------------------------------------------------
+
+_ACCELERATING = Scenario(script=[ScriptedCommand(t=0.0, linear=0.1, angular=0.5),
+                                 ScriptedCommand(t=0.4, linear=0.26, angular=-1.0)])
+
+
+def _advance_in_chunks(world: World, ends_ms: list[int]) -> list:
+    out = []
+    for end in ends_ms:
+        out += world.advance_to(world.start_ns + end * 1_000_000)
+    return out
+
+
+def test_unheard_sensors_are_not_published():
+    world = World(_ACCELERATING)
+    world.listen({"/odom"})
+    samples = world.advance_to(world.start_ns + SECOND)
+    assert not _of(samples, ImuSample) and not _of(samples, JointStateSample) and not _of(samples, ScanSample)
+
+
+def test_imu_heard_again_reads_what_an_always_heard_imu_reads():
+    # Chunk ends off the 200 Hz grid, so the IMU's last unheard sample time falls inside a chunk, between two ticks.
+    ends = [7, 123, 250, 251, 404, 611, 777, 1000]
+    heard = _of(_advance_in_chunks(World(_ACCELERATING), ends), ImuSample)
+    world = World(_ACCELERATING)
+    world.listen({"/odom"})
+    _advance_in_chunks(world, ends[:5])
+    world.listen({"/imu"})
+    later = _of(_advance_in_chunks(world, ends[5:]), ImuSample)
+    assert later and later[0].t_ns > world.start_ns + 404_000_000
+    assert later == [s for s in heard if s.t_ns >= later[0].t_ns]
+    assert any(abs(s.linear_acceleration[0]) > 0.1 for s in later[:15])  # the 0.4 s command speeds it up
+
+
+def test_physics_does_not_depend_on_which_sensors_are_heard():
+    everything = World(_ACCELERATING)
+    odometry_only = World(_ACCELERATING)
+    odometry_only.listen({"/odom"})
+    ends = [3, 99, 500, 1000]
+    _advance_in_chunks(everything, ends)
+    _advance_in_chunks(odometry_only, ends)
+    assert everything.state() == odometry_only.state()

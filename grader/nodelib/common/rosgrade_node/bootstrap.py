@@ -9,7 +9,7 @@ import sys
 import rosgrade_channel as ch
 import rosgrade_params
 
-from . import excepthook, pids, realtime, runtime, streams, threads, timepatch
+from . import cpus, excepthook, pids, realtime, runtime, streams, threads, timepatch
 from .link import Link
 from .scheduler import Scheduler
 
@@ -58,6 +58,7 @@ def start(channel: str) -> None:
     sys.stderr = streams.make_stream(link, 2, 2, "backslashreplace")
     timepatch.install()
     pids.install()  # after HELLO, which gives the grader the real pid
+    cpus.install()  # after pids: the node's own pid is the one it sees
     threads.install()
     realtime.install()
     excepthook.install()
