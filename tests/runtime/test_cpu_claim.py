@@ -21,7 +21,17 @@ needs_two_cpus = pytest.mark.skipif(len(ALLOWED) < 2, reason="pinning needs at l
 @pytest.fixture(autouse=True)
 def own_lock_folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Claims in a folder of the test's own, so graders running beside the tests neither see nor block them."""
+    monkeypatch.setattr(cpu_claim, "_lock_folder", lambda: tmp_path)
+
+
+def test_claims_live_where_every_grader_looks_whatever_its_temporary_directory(tmp_path: Path,
+                                                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.undo()
     monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    if Path("/dev/shm").is_dir() and os.access("/dev/shm", os.W_OK):
+        assert cpu_claim._lock_path(0) == Path("/dev/shm/rosgrade-cpu-0.lock")
+    else:
+        assert cpu_claim._lock_path(0) == tmp_path / "rosgrade-cpu-0.lock"
 
 
 @needs_two_cpus
@@ -91,7 +101,7 @@ def test_a_claim_held_by_another_process_is_respected_and_freed_when_it_dies(tmp
 
 @needs_two_cpus
 def test_an_unusable_lock_folder_leaves_the_run_unpinned(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path / "missing"))
+    monkeypatch.setattr(cpu_claim, "_lock_folder", lambda: tmp_path / "missing")
     with one_cpu() as cpu:
         assert cpu is None
         assert os.sched_getaffinity(0) == ALLOWED
