@@ -65,7 +65,7 @@ def grade_one(submission: Path, out_dir: Path, task_ids: Sequence[str] | None,
     """Grade one submission into out_dir (`jobs` scenarios at once) and write its report folder (report.json last)."""
     grading = importlib.import_module("grader.grading")
     report = grading.grade_submission(submission, out_dir, task_ids, rubrics, jobs=jobs).total()
-    files = write_report_folder(report, out_dir)
+    files = write_report_folder(report, out_dir, jobs=jobs)
     return files.report, files
 
 

@@ -25,6 +25,7 @@ from grader.runtime.parallel import Outcome, Run, run_all
 from grader.runtime.session import RunError, node_log_path
 from grader.scoring import score_task
 from grader.taskfit import fitting_tasks, in_folder
+from grader.workers import fork_map
 from grader.submission import (
     STAGE_PREFIX, SubmissionError, claim, links_leaving, open_submission, remove_if_abandoned, unzip,
 )
@@ -224,8 +225,9 @@ def _grade_tasks(folder: Path, rubrics: Sequence[Rubric], out_dir: Path, progres
             progress(f"{task_of[id(item)]}: scenario {item.spec.name}")
 
     outcomes = iter(run_all(runs, jobs, started))
-    return [_score_task(plan, [next(outcomes) for _ in plan.runs]) if isinstance(plan, _TaskPlan) else plan
-            for plan in plans]
+    ran = [(plan, [next(outcomes) for _ in plan.runs]) for plan in plans if isinstance(plan, _TaskPlan)]
+    scored = iter(fork_map(lambda task: _score_task(*task), ran, jobs))  # tasks score independently
+    return [next(scored) if isinstance(plan, _TaskPlan) else plan for plan in plans]
 
 
 def grade_task(folder: Path, rubric: Rubric, out_dir: Path, progress: Progress | None = None) -> TaskReport:

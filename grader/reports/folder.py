@@ -28,12 +28,14 @@ class ReportFiles:
     notes: list[str] = field(default_factory=list)
 
 
-def write_report_folder(report: SubmissionReport, folder: Path, with_plots: bool = True) -> ReportFiles:
-    """Write the report files into folder; report.json goes last, so its presence means the folder is complete."""
+def write_report_folder(report: SubmissionReport, folder: Path, with_plots: bool = True,
+                        jobs: int = 1) -> ReportFiles:
+    """Write the report files into folder (``jobs`` processes drawing the plots); report.json goes last, so its
+    presence means the folder is complete."""
     with timing.stage("advice"):
         report = with_advice(report) if with_plots else report
     with timing.stage("plots"):
-        plots, notes = report_plots(report) if with_plots else ([], [])
+        plots, notes = report_plots(report, jobs=jobs) if with_plots else ([], [])
     with timing.stage("report files"):
         return _write(report, folder, plots, notes)
 

@@ -60,23 +60,35 @@ def shape_for(task_id: str) -> str | None:
     return None
 
 
-def report_plots(report: SubmissionReport, dpi: int = DPI) -> tuple[list[Plot], list[str]]:
-    """Plots for every recording of a report, and a note for each recording that could not be read."""
-    plots: list[Plot] = []
-    notes: list[str] = []
-    if not any(task.recordings for task in report.tasks):
-        return plots, notes
+def report_plots(report: SubmissionReport, dpi: int = DPI, jobs: int = 1) -> tuple[list[Plot], list[str]]:
+    """Plots for every recording of a report, and a note for each recording that could not be read; ``jobs``
+    processes draw them (one share of the recordings each), in the same order and to the same bytes."""
+    wanted = [(task.id, path) for task in report.tasks for path in task.recordings]
+    if not wanted:
+        return [], []
+    from grader.workers import fork_map
+
+    shares = [wanted[i::jobs] for i in range(min(max(1, jobs), len(wanted)))]
+    drawn = fork_map(lambda share: _draw(share, dpi), shares, jobs)
+    by_recording = {item: result for share, results in zip(shares, drawn) for item, result in zip(share, results)}
+    plots = [plot for item in wanted for plot in by_recording[item][0]]
+    notes = [note for item in wanted if (note := by_recording[item][1])]
+    return plots, notes
+
+
+def _draw(share: list[tuple[str, str]], dpi: int) -> list[tuple[list[Plot], str | None]]:
+    """The plots of each (task id, recording path), or why that recording could not be plotted."""
     from grader.recording import Recording, RecordingError
 
     figures = Figures(dpi)  # built once, refilled for every recording
-    for task in report.tasks:
-        for path in task.recordings:
-            try:
-                recording = Recording.open(Path(path))
-                plots.extend(task_plots(task.id, Path(path).stem, recording, dpi=dpi, figures=figures))
-            except RecordingError as exc:
-                notes.append(f"{task.id}: could not plot {Path(path).name}: {exc}")
-    return plots, notes
+    drawn: list[tuple[list[Plot], str | None]] = []
+    for task_id, path in share:
+        try:
+            drawn.append((task_plots(task_id, Path(path).stem, Recording.open(Path(path)), dpi=dpi, figures=figures),
+                          None))
+        except RecordingError as exc:
+            drawn.append(([], f"{task_id}: could not plot {Path(path).name}: {exc}"))
+    return drawn
 
 
 def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = DPI,

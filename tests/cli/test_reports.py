@@ -107,3 +107,15 @@ def test_odom_subscriber_gets_a_printed_vs_true_plot():
 def test_square_plot_without_ground_truth_uses_odometry():
     plots = task_plots("move_square", "nominal", fakes.FakeRecording(Path("x.bag"), ground_truth=False, metadata={}))
     assert [p.name for p in plots] == ["path", "commands"]
+
+
+def test_unreadable_recordings_get_a_note_each_in_report_order_with_any_number_of_jobs(tmp_path):
+    from grader.report import SubmissionReport
+    from grader.reports.plots import report_plots
+
+    missing = [str(tmp_path / f"{name}.mcap") for name in ("a", "b", "c")]
+    report = SubmissionReport(submission="s", tasks=[fakes.circle_task(recordings=missing)]).total()
+    for jobs in (1, 2, 5):
+        plots, notes = report_plots(report, jobs=jobs)
+        assert plots == [] and [n.split("could not plot ")[1].split(":")[0] for n in notes] == ["a.mcap", "b.mcap",
+                                                                                                 "c.mcap"]

@@ -43,3 +43,15 @@ def test_recordings_are_byte_identical(checked: dict[int, Path]) -> None:
 def test_node_logs_are_identical(checked: dict[int, Path]) -> None:
     one, two = _files(checked[1], "*.log"), _files(checked[2], "*.log")
     assert one and one == two
+
+
+def test_plots_are_byte_identical(checked: dict[int, Path]) -> None:
+    # -j 2 draws them in two worker processes, a share of the recordings each
+    one, two = _files(checked[1], "*.png"), _files(checked[2], "*.png")
+    assert len(one) >= 7 and one == two
+
+
+def test_the_report_pages_differ_only_in_the_output_folder(checked: dict[int, Path]) -> None:
+    for page in ("report.md", "report.html"):
+        one, two = (checked[j].joinpath(page).read_text() for j in (1, 2))
+        assert one.replace(str(checked[1]), "OUT") == two.replace(str(checked[2]), "OUT")
