@@ -235,13 +235,17 @@ def decode_twist_cdr(data: bytes | bytearray | memoryview) -> tuple[Vec3, Vec3]:
     return (v[0], v[1], v[2]), (v[3], v[4], v[5])
 
 
+def _aligned(pos: int, size: int) -> int:
+    """``pos`` moved up to the next multiple of ``size`` counted from the CDR body, which starts after the 4-byte
+    encapsulation header: where the field after a string lies."""
+    return pos + (-(pos - 4) % size)
+
+
 def decode_twist_stamped_cdr(data: bytes | bytearray | memoryview) -> tuple[Vec3, Vec3]:
     """(linear, angular) of geometry_msgs/msg/TwistStamped CDR bytes (the node link has already validated them)."""
     try:
         _, _, length = _STAMPED_HEAD.unpack_from(data, 0)
-        body = 16 + length
-        body += -(body - 4) % 8
-        v = struct.unpack_from("<6d", data, body)
+        v = struct.unpack_from("<6d", data, _aligned(16 + length, 8))
     except struct.error:
         raise RecordingError(f"{len(data)} bytes are not a geometry_msgs/msg/TwistStamped message") from None
     return (v[0], v[1], v[2]), (v[3], v[4], v[5])
@@ -256,11 +260,9 @@ def decode_odometry_pose_twist_cdr(data: bytes | bytearray | memoryview) -> tupl
     length (serialize.decode_odometry_pose_twist's twin)."""
     try:
         sec, nanosec, length = _ODOMETRY_HEAD.unpack_from(data, 0)
-        pos = 16 + length
-        pos += -(pos - 4) % 4
+        pos = _aligned(16 + length, 4)
         (child,) = _U32.unpack_from(data, pos)
-        pos += 4 + child
-        pos += -(pos - 4) % 8
+        pos = _aligned(pos + 4 + child, 8)
         if pos + _ODOMETRY_BODY.size != len(data):
             raise struct.error("length")
         v = _ODOMETRY_BODY.unpack_from(data, pos)

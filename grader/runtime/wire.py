@@ -39,7 +39,7 @@ class Wire:
     twist_type: str  # what the grader's scripted driver records
     default_command_types: tuple[str, ...]  # what a robot's base takes unless the scenario says otherwise
     command_decoders: Mapping[str, Callable[[bytes], tuple[Vec3, Vec3]]]
-    _log: Callable[..., bytes]
+    _log: Callable[[int, int, int, str, str, str, str, int, list[str]], bytes]  # as `log` takes them
     _string: Callable[[str], bytes]
     _twist: Callable[[Vec3, Vec3], bytes]
 
@@ -62,9 +62,7 @@ class Wire:
     def log(self, t_ns: int, seq: int, level: int, name: str, msg: str, file: str, function: str, line: int,
             topics: list[str]) -> bytes:
         """The /rosout message of a node's log call (``level`` in the node's own library's scale)."""
-        if self.name == "ros1":
-            return self._log(t_ns, seq, level, name, msg, file, function, line, topics)
-        return self._log(t_ns, level, name, msg, file, function, line)
+        return self._log(t_ns, seq, level, name, msg, file, function, line, topics)
 
     def string(self, text: str) -> bytes:
         return self._string(text)
@@ -118,7 +116,13 @@ def _ros2_wire() -> Wire:
         # The Jazzy TurtleBot3 (and the COM2009 simulation) drive on TwistStamped only; Humble's on Twist.
         default_command_types=(TWIST_STAMPED2,),
         command_decoders={TWIST2: cdr.decode_twist_cdr, TWIST_STAMPED2: cdr.decode_twist_stamped_cdr},
-        _log=cdr.log_cdr, _string=cdr.string_cdr, _twist=cdr.twist_cdr)
+        _log=_log_cdr, _string=cdr.string_cdr, _twist=cdr.twist_cdr)
+
+
+def _log_cdr(t_ns: int, seq: int, level: int, name: str, msg: str, file: str, function: str, line: int,
+             topics: list[str]) -> bytes:
+    """rcl_interfaces/msg/Log has neither a sequence number nor the node's topics."""
+    return cdr.log_cdr(t_ns, level, name, msg, file, function, line)
 
 
 @lru_cache(maxsize=None)
