@@ -7,7 +7,6 @@ the process that started it dies) wherever it runs.
 from __future__ import annotations
 
 import contextlib
-import ctypes
 import importlib
 import os
 import shutil
@@ -21,8 +20,8 @@ from multiprocessing.connection import Connection
 from typing import Any, Literal, NoReturn
 
 from grader.submission import OWNER_FILE, STAGE_PREFIX, claim, remove_if_abandoned
+from grader.workers import die_with_parent
 
-PR_SET_PDEATHSIG = 1
 SCRATCH_PREFIX = "rosgrade-worker-"
 
 Status = Literal["graded", "error", "timeout"]
@@ -132,7 +131,7 @@ def _child(job: Job, writer: Connection, scratch: Path, stage_root: Path) -> NoR
         tempfile.tempdir = str(scratch)
         os.setpgid(0, 0)
         signal.signal(signal.SIGINT, signal.SIG_IGN)
-        _die_with_parent()
+        die_with_parent()
         grading = importlib.import_module("grader.grading")
         try:
             graded = grading.grade_as_data(job.submission, job.label, job.task_ids, job.rubrics, stage_root)
@@ -147,16 +146,6 @@ def _child(job: Job, writer: Connection, scratch: Path, stage_root: Path) -> NoR
     finally:
         writer.close()
         os._exit(code)
-
-
-def _die_with_parent() -> None:
-    """Ask Linux to SIGKILL this process when its parent dies (a killed batch or Dask worker leaves no orphans)."""
-    try:
-        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
-    except (OSError, AttributeError):  # not Linux: the batch's own kill on exit still applies
-        return
-    if os.getppid() == 1:  # the parent died before the request was made
-        os._exit(1)
 
 
 def _kill_group(group: int) -> None:

@@ -91,8 +91,7 @@ def _child(function: Callable[[T], R], item: T, writer: Connection) -> NoReturn:
     code = 0
     try:
         signal.signal(signal.SIGINT, signal.SIG_IGN)
-        with contextlib.suppress(OSError, AttributeError):
-            ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
+        die_with_parent()
         # Fresh standard streams: a thread of the parent (a progress display) may have held their locks at fork.
         sys.stdout = open(1, "w", closefd=False, encoding="utf-8", errors="replace")  # noqa: SIM115
         sys.stderr = open(2, "w", closefd=False, encoding="utf-8", errors="replace")  # noqa: SIM115
@@ -107,6 +106,17 @@ def _child(function: Callable[[T], R], item: T, writer: Connection) -> NoReturn:
     finally:
         writer.close()
         os._exit(code)
+
+
+def die_with_parent() -> None:
+    """Ask Linux to SIGKILL this process when its parent dies (a killed grader, batch or Dask worker leaves no
+    orphans); exit at once if the parent is already gone."""
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
+    except (OSError, AttributeError):  # not Linux: the batch's own kill on exit still applies
+        return
+    if os.getppid() == 1:  # the parent died before the request was made
+        os._exit(1)
 
 
 def _kill(pid: int) -> None:

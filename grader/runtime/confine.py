@@ -491,8 +491,9 @@ def exited(pid: int) -> bool:
     return state.startswith(("Z", "X"))
 
 
-def _stat_field(pid: int, index: int) -> int | None:
-    """A numeric field of /proc/<pid>/stat, counted after the name (which may hold spaces and parentheses)."""
+def stat_field(pid: int | str, index: int) -> int | None:
+    """A numeric field of /proc/<pid>/stat, counted after the name (which may hold spaces and parentheses); ``pid``
+    may also be "self" or "thread-self"."""
     data = _read(f"/proc/{pid}/stat")
     try:
         return int(data[data.rindex(b")") + 2:].split()[index])
@@ -502,12 +503,12 @@ def _stat_field(pid: int, index: int) -> int | None:
 
 def parent_of(pid: int) -> int | None:
     """The parent pid."""
-    return _stat_field(pid, 1)
+    return stat_field(pid, 1)
 
 
 def cpu_seconds(pid: int) -> float:
     """User + system CPU time of pid so far."""
-    ticks = (_stat_field(pid, 11) or 0) + (_stat_field(pid, 12) or 0)
+    ticks = (stat_field(pid, 11) or 0) + (stat_field(pid, 12) or 0)
     return ticks / os.sysconf("SC_CLK_TCK")
 
 
@@ -522,7 +523,7 @@ def tmpfs_used(folder: str) -> int:
 
 def started_at(pid: int) -> int | None:
     """When pid started, in clock ticks since boot (to tell processes started after a given one)."""
-    return _stat_field(pid, 19)
+    return stat_field(pid, 19)
 
 
 def children_of(pid: int) -> list[int]:

@@ -5,9 +5,9 @@ different CPUs, each one is a wake-up of an idle CPU, which is slow, above all i
 context switch: a whole move_square check ran in 23.5 s pinned against 34.6 s unpinned on this 2-core VM.
 
 A run claims a CPU with an advisory lock file in /dev/shm (flock, released when its process dies, however it
-dies; the empty files stay, one per CPU, for the next claims). So
-parallel runs, whether ours, a batch's or another grader's on the same machine, spread over the CPUs. When
-every CPU is claimed, or none can be claimed, the run goes unpinned, as before.
+dies; the empty files stay, one per CPU, for the next claims). So parallel runs, whether ours, a batch's or
+another grader's on the same machine, spread over the CPUs. When every CPU is claimed, or none can be claimed,
+the run goes unpinned, as before.
 """
 from __future__ import annotations
 
@@ -17,6 +17,8 @@ import os
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
+
+from grader.runtime.confine import stat_field
 
 LOCK_PREFIX = "rosgrade-cpu-"
 
@@ -32,15 +34,6 @@ def _lock_path(cpu: int) -> Path:
     return _lock_folder() / f"{LOCK_PREFIX}{cpu}.lock"
 
 
-def _current_cpu() -> int | None:
-    """The CPU this thread last ran on (field 39 of /proc/thread-self/stat), None where Linux does not say."""
-    try:
-        text = Path("/proc/thread-self/stat").read_text()
-        return int(text[text.rindex(")") + 2:].split()[36])
-    except (OSError, ValueError, IndexError):
-        return None
-
-
 def _claim(cpu: int) -> int | None:
     """A descriptor holding CPU `cpu`'s lock, or None if another run holds it or its file cannot be had."""
     path = _lock_path(cpu)
@@ -49,7 +42,7 @@ def _claim(cpu: int) -> int | None:
         with contextlib.suppress(OSError):  # readable by other users' graders whatever our umask (if it is ours)
             os.fchmod(fd, 0o644)
     except OSError:
-        try:  # another user's file in a sticky /tmp: opening it without O_CREAT is still allowed
+        try:  # another user's file in a sticky folder (/dev/shm, /tmp): opening it without O_CREAT is still allowed
             fd = os.open(path, os.O_RDONLY | os.O_CLOEXEC)
         except OSError:
             return None
@@ -72,7 +65,7 @@ def one_cpu() -> Iterator[int | None]:
     if len(allowed) < 2:
         yield None
         return
-    here = _current_cpu()
+    here = stat_field("thread-self", 36)  # the CPU this thread last ran on (field 39 of its stat)
     # The CPU we are on first: the kernel's own choice, and its caches are warm.
     order = sorted(allowed, key=lambda cpu: (cpu != here, cpu))
     for cpu in order:
