@@ -1,7 +1,8 @@
 """How fast a whole `check` is: where its wall time goes, graded sim-seconds per second, and what -j N gains.
 
 The figures that matter are ratios measured in the same process run, so a loaded machine shifts them less than
-absolute times: graded simulated seconds per wall second (and per busy CPU second of the machine) against the physics-only real-time factor (`sim.bench`), and -j N against -j 1.
+absolute times: graded simulated seconds per wall second (and per busy CPU second of the machine) against the
+physics-only real-time factor (`sim.bench`), and -j N against -j 1.
 """
 from __future__ import annotations
 
@@ -17,9 +18,9 @@ from grader.batch import grade_one
 
 # Stages in the order a check goes through them (timing.py names); anything else is listed after them.
 STAGE_ORDER = (
-    "node start-up", "world set-up (model, run to the start)", "physics and sensors", "world messages (encode, record, queue)",
-    "node steps (channel, node publications)", "waiting for nodes", "stopping nodes", "reading recordings",
-    "scoring", "advice", "plots", "report files",
+    "node start-up", "world set-up (model, run to the start)", "physics and sensors",
+    "world messages (encode, record, queue)", "node steps (channel, node publications)", "waiting for nodes",
+    "stopping nodes", "reading recordings", "scoring", "advice", "plots", "report files",
 )
 OTHER = "other (grader bookkeeping, recording close)"
 

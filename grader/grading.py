@@ -25,10 +25,10 @@ from grader.runtime.parallel import Outcome, Run, run_all
 from grader.runtime.session import RunError, node_log_path
 from grader.scoring import score_task
 from grader.taskfit import fitting_tasks, in_folder
-from grader.workers import fork_map
 from grader.submission import (
     STAGE_PREFIX, SubmissionError, claim, links_leaving, open_submission, remove_if_abandoned, unzip,
 )
+from grader.workers import fork_map
 
 __all__ = ["GradedSubmission", "SubmissionError", "grade_as_data", "grade_submission", "grade_task"]
 

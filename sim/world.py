@@ -131,7 +131,6 @@ class World(ScenarioTimes):
         self._odometry_every = steps_per_tick(self.mode.odometry.rate_hz)
         self._tf_every = steps_per_tick(self.mode.tf.rate_hz) if self.mode.tf is not None else None
         self._truth_every = steps_per_tick(GROUND_TRUTH_HZ)
-        self._listened: frozenset[str] | None = None  # see listen()
         self._sensors: list[tuple[int, Sensor]] = []
         if sensors.imu is not None:
             assert imu is not None
@@ -231,9 +230,9 @@ class World(ScenarioTimes):
         A sensor nobody subscribes to changes nothing in the world, and at 200 Hz (a TurtleBot3's /imu) its samples
         cost more to encode and record than the physics costs to run; the session names what its nodes subscribe to.
         Odometry, /tf and ground truth are always published."""
-        self._listened = None if topics is None else frozenset(topics)
+        heard = None if topics is None else frozenset(topics)
         self._schedule = self._schedule_for([(p, sensor) for p, sensor in self._sensors
-                                             if self._listened is None or sensor.topic in self._listened])
+                                             if heard is None or sensor.topic in heard])
 
     def advance_to(self, t_ns: int) -> list[Sample]:
         """Step physics to ``t_ns``; return the samples due in (previous time, ``t_ns``], in time order."""

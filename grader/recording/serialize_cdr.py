@@ -269,4 +269,3 @@ def decode_odometry_pose_twist_cdr(data: bytes | bytearray | memoryview) -> tupl
     except struct.error:
         raise RecordingError(f"{len(data)} bytes are not a nav_msgs/msg/Odometry message") from None
     return sec * _NS + nanosec, v[0:7], (v[43], v[44], v[45]), (v[46], v[47], v[48])
-

@@ -12,6 +12,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from grader.nodelib import precompile
 from grader.runtime.session import RunError, run
 from grader.runtime.spec import RunResult, RunSpec
 from grader.workers import WorkerError, fork_map
@@ -40,4 +41,5 @@ def _attempt(item: Run) -> Outcome:
 
 def run_all(runs: Sequence[Run], jobs: int = 1, started: Callable[[Run], None] | None = None) -> list[Outcome]:
     """Carry out every run, `jobs` at a time; a RunError is returned in the run's place, not raised."""
+    precompile()  # here, once: forked workers inherit it done instead of each checking the bytecode again (~25 ms)
     return fork_map(_attempt, runs, jobs, started=started, first=lambda run: -run.spec.scenario.duration)

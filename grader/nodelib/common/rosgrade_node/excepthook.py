@@ -12,7 +12,6 @@ from . import runtime
 from .scheduler import NODELIB_DIR  # none of its frames are the student's
 
 
-
 def _is_student_frame(filename: str) -> bool:
     return not (filename.startswith(NODELIB_DIR) or filename.startswith("<frozen")
                 or os.path.basename(filename) == "runpy.py")
