@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -10,6 +12,8 @@ import tf
 import tf.transformations as tft
 from genpy import Duration, Time
 from geometry_msgs.msg import Quaternion
+
+from grader.nodelib import pythonpath
 
 
 def test_time_construction_and_text():
@@ -52,6 +56,26 @@ def test_euler_from_quaternion_values():
     assert tft.euler_from_quaternion([0, 0, 0.7071, 0.7071])[2] == math.pi / 2
     assert tft.euler_from_quaternion([0, 0, 0, 0]) == (0.0, -0.0, 0.0)
     assert all(type(v) is float for v in tft.euler_from_quaternion(np.array([0.1, 0.2, 0.3, 0.9])))
+
+
+@pytest.mark.parametrize("axes", ["sxyz", "rzyx", "sxzx", "rxyx"])
+def test_euler_from_quaternion_of_floats_is_numpys_to_the_bit(axes):
+    rng = np.random.default_rng(5)
+    for scale in (1e-8, 1e-3, 1.0, 1e4):
+        for q in rng.normal(size=(2000, 4)) * scale:
+            expected = tft.euler_from_matrix(tft.quaternion_matrix(q), axes)  # the numpy code path
+            got = tft.euler_from_quaternion(q.tolist(), axes)
+            assert [v.hex() for v in got] == [float(v).hex() for v in expected], q.tolist()
+
+
+def test_tf_transformations_imports_numpy_only_when_a_call_needs_it():
+    script = ("import sys, tf.transformations as t\n"
+              "print(t.euler_from_quaternion([0.0, 0.0, 0.5, 0.5]), 'numpy' in sys.modules)\n"
+              "print(t.quaternion_from_euler(0, 0, 1.0)[3], 'numpy' in sys.modules)\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60,
+                          env={"PYTHONPATH": pythonpath("ros1"), "PATH": "/usr/bin:/bin"})
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines() == [f"(0.0, -0.0, {math.pi / 2!r}) False", f"{math.cos(0.5)!r} True"]
 
 
 def test_tf_errors():

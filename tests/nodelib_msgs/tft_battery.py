@@ -247,6 +247,25 @@ def arcball_sessions() -> None:
             return steps
         call("Arcball/%d" % n, session)
     call("Arcball/bad-initial", tft.Arcball, [1, 2, 3])
+    euler_from_quaternion_inputs()
+
+
+def euler_from_quaternion_inputs() -> None:
+    """The inputs rosgrade computes without numpy (lists and tuples of floats and ints) and those it hands to numpy."""
+    for n in range(60):
+        q = vec(4, [1e-9, 1e-3, 1.0, 1e3][n % 4])
+        for axes in ("sxyz", "rzyx", AXES[n % len(AXES)]):
+            call("euler_from_quaternion/list/%s/%d" % (axes, n), tft.euler_from_quaternion, q, axes)
+        call("euler_from_quaternion/tuple/%d" % n, tft.euler_from_quaternion, tuple(q))
+        call("euler_from_quaternion/ints/%d" % n, tft.euler_from_quaternion, [round(v * 3) for v in q])
+        call("euler_from_quaternion/array/%d" % n, tft.euler_from_quaternion, numpy.array(q))
+        call("euler_from_quaternion/long/%d" % n, tft.euler_from_quaternion, q + [5.0])
+    for label, q in (("zero", [0.0, 0.0, 0.0, 0.0]), ("zero-ints", [0, 0, 0, 0]), ("tiny", [1e-9, 0.0, 0.0, 0.0]),
+                     ("nan", [math.nan, 0.0, 0.0, 1.0]), ("inf", [0.0, math.inf, 0.0, 1.0]),
+                     ("bools", [False, False, True, True]), ("strings", ["0", "0", "1", "0"]),
+                     ("short", [0.0, 0.0, 1.0]), ("mixed", [0.0, numpy.float64(0.5), 0.5, 1]), ("empty", [])):
+        call("euler_from_quaternion/%s" % label, tft.euler_from_quaternion, q)
+    call("euler_from_quaternion/bad-axes", tft.euler_from_quaternion, [0.0, 0.0, 0.0, 1.0], "xyz")
 
 
 if __name__ == "__main__":

@@ -3,14 +3,29 @@
 
 Quaternions are (x, y, z, w). Each function performs the same floating-point operations in the same order as tf's,
 so results (e.g. the -0.0 pitch of the identity, yaw +pi for [0, 0, 1, 0]) match bit for bit.
+
+numpy is imported at the first call that needs it, not with the module: importing it costs a node about 0.1 s of
+start-up, and the call most nodes make, ``euler_from_quaternion`` of a list of floats, is computed without it.
 """
 from __future__ import annotations
 
 import math
+import sys
 
-import numpy
 
-_EPS = numpy.finfo(float).eps * 4.0
+class _LazyNumpy:
+    """Stands for the numpy module until first used; then imports it and puts it in this module's globals."""
+
+    def __getattr__(self, name: str):
+        import numpy as module
+
+        globals()["numpy"] = module
+        return getattr(module, name)
+
+
+numpy = _LazyNumpy()
+
+_EPS = sys.float_info.epsilon * 4.0
 _NEXT_AXIS = [1, 2, 0, 1]
 
 
@@ -459,10 +474,15 @@ def euler_matrix(ai, aj, ak, axes="sxyz"):
 def euler_from_matrix(matrix, axes="sxyz"):
     """Euler angles (a tuple of 3 floats from math.atan2) of a rotation matrix for the axis sequence."""
     firstaxis, parity, repetition, frame = _axes(axes)
+    return _euler_from_rotation(numpy.asarray(matrix, dtype=numpy.float64)[:3, :3], firstaxis, parity, repetition,
+                                frame)
+
+
+def _euler_from_rotation(M, firstaxis: int, parity: int, repetition: int, frame: int):
+    """euler_from_matrix on a 3x3 rotation M indexed M[row, column] (a numpy array or a _Rows)."""
     i = firstaxis
     j = _NEXT_AXIS[i + parity]
     k = _NEXT_AXIS[i - parity + 1]
-    M = numpy.asarray(matrix, dtype=numpy.float64)[:3, :3]
     if repetition:
         sy = math.sqrt(M[i, j] * M[i, j] + M[i, k] * M[i, k])
         if sy > _EPS:
@@ -492,7 +512,33 @@ def euler_from_matrix(matrix, axes="sxyz"):
 
 def euler_from_quaternion(quaternion, axes="sxyz"):
     """Euler angles of an (x, y, z, w) quaternion, normalised first (a zero quaternion gives zeros)."""
+    if type(quaternion) in (list, tuple) and len(quaternion) >= 4 and all(type(v) in (float, int)
+                                                                         for v in quaternion[:4]):
+        return _euler_from_rotation(_Rows(_rotation_rows(*(float(v) for v in quaternion[:4]))), *_axes(axes))
     return euler_from_matrix(quaternion_matrix(quaternion), axes)
+
+
+class _Rows(tuple):
+    """A 3x3 matrix of floats as a tuple of rows that numpy-style M[row, column] indexing reads."""
+
+    def __getitem__(self, index):
+        row, column = index
+        return tuple.__getitem__(self, row)[column]
+
+
+def _rotation_rows(x: float, y: float, z: float, w: float) -> tuple[tuple[float, float, float], ...]:
+    """quaternion_matrix's 3x3 rotation in plain floats: the same operations in the same order as its numpy code
+    (numpy.dot of four float64s sums them from the first to the last), so the same bits."""
+    nq = ((x * x + y * y) + z * z) + w * w
+    if nq < _EPS:
+        return (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)
+    scale = math.sqrt(2.0 / nq)
+    x, y, z, w = x * scale, y * scale, z * scale, w * scale
+    xx, xy, xz, xw = x * x, x * y, x * z, x * w
+    yy, yz, yw, zz, zw = y * y, y * z, y * w, z * z, z * w
+    return ((1.0 - yy - zz, xy - zw, xz + yw),
+            (xy + zw, 1.0 - xx - zz, yz - xw),
+            (xz - yw, yz + xw, 1.0 - xx - yy))
 
 
 def quaternion_from_euler(ai, aj, ak, axes="sxyz"):
