@@ -6,6 +6,7 @@ built from the file's own schemas. Bags go through rosbags' AnyReader.
 """
 from __future__ import annotations
 
+import functools
 import struct
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -164,14 +165,15 @@ def _load_mcap(path: Path, profile: str) -> Source:
             raise _unreadable(path, f"{truncated}, before any complete message")
         truncated = f"{truncated}; {len(messages)} messages before that were read"
     schema_encoding, message_encoding, encoding, version = _MCAP_FLAVOURS[profile]
-    source = Source(f"mcap-{profile}", encoding, _typestore_from_schemas(path, schemas, schema_encoding),
-                    metadata=metadata, truncated=truncated)
+    definitions = _definitions(path, schemas, schema_encoding)
+    source = Source(f"mcap-{profile}", encoding, _typestore(path, definitions), metadata=metadata,
+                    truncated=truncated)
     for channel in raw_channels.values():
         schema = schemas.get(channel.schema_id)
         if schema is None or schema.encoding != schema_encoding or channel.message_encoding != message_encoding:
             continue  # nothing to decode it with
         type_name, store_type = _names(schema.name)
-        md5sum = source.typestore.generate_msgdef(store_type, ros_version=1)[1] if version == 1 else ""
+        md5sum = _md5sum(definitions, store_type) if version == 1 else ""
         source.channels[channel.id] = ChannelInfo(
             channel.id,
             channel.topic,
@@ -212,18 +214,43 @@ def _mcap_damage(exc: BaseException) -> str:
     return f"damaged ({_describe(exc)})"
 
 
-def _typestore_from_schemas(path: Path, schemas: dict[int, Schema], encoding: str) -> Typestore:
-    """A type store holding exactly the definitions the file carries (``encoding``: ros1msg or ros2msg)."""
-    store = get_typestore(Stores.EMPTY)
-    types = {}
+# (type name, definition text) of every schema of a file, in file order: what its type store is built from.
+Definitions = tuple[tuple[str, str], ...]
+
+
+def _definitions(path: Path, schemas: dict[int, Schema], encoding: str) -> Definitions:
+    """The file's message definitions in ``encoding`` (ros1msg or ros2msg)."""
     try:
-        for schema in schemas.values():
-            if schema.encoding == encoding:
-                types.update(get_types_from_msg(schema.data.decode(), _names(schema.name)[0]))
-        store.register(types)
+        return tuple((_names(schema.name)[0], schema.data.decode()) for schema in schemas.values()
+                     if schema.encoding == encoding)
+    except UnicodeDecodeError as exc:
+        raise _unreadable(path, f"bad message definition ({_describe(exc)})") from None
+
+
+def _typestore(path: Path, definitions: Definitions) -> Typestore:
+    """A type store holding exactly the definitions the file carries."""
+    try:
+        return _shared_typestore(definitions)
     except Exception as exc:  # noqa: BLE001 - the schema text is file content, not code
         raise _unreadable(path, f"bad message definition ({_describe(exc)})") from None
+
+
+# A run's recordings carry the same few definitions, whose parsing took as long as reading the messages: one store
+# serves every file with the same definitions (nothing registers types in it afterwards).
+@functools.lru_cache(maxsize=16)
+def _shared_typestore(definitions: Definitions) -> Typestore:
+    store = get_typestore(Stores.EMPTY)
+    types = {}
+    for type_name, text in definitions:
+        types.update(get_types_from_msg(text, type_name))
+    store.register(types)
     return store
+
+
+@functools.lru_cache(maxsize=256)
+def _md5sum(definitions: Definitions, store_type: str) -> str:
+    """ROS 1 md5sum of a type as the file's own definitions give it."""
+    return _shared_typestore(definitions).generate_msgdef(store_type, ros_version=1)[1]
 
 
 def _load_anyreader(path: Path, fmt: str, suffix: str | None = None) -> Source:
