@@ -1,6 +1,7 @@
 """`Recording`: a run's recording (ours, a ROS 1 bag or a ROS 2 bag) as the numpy arrays the metrics score."""
 from __future__ import annotations
 
+import copy
 import heapq
 import json
 from collections.abc import Collection, Iterator
@@ -9,6 +10,7 @@ from typing import Any
 
 import numpy as np
 
+from grader.recording import memo as memos
 from grader.recording.errors import RecordingError
 from grader.recording.messages import MessageCatalog, default_catalog
 from grader.recording.ros2_messages import ros2_catalog
@@ -65,31 +67,54 @@ def _json_or_text(value: str) -> Any:
 class Recording:
     """Read-only view of one recording; open with `Recording.open`."""
 
-    def __init__(self, path: Path, source: Source, catalog: MessageCatalog) -> None:
+    def __init__(self, path: Path, source: Source | None, catalog: MessageCatalog,
+                 memo: memos.FileMemo | None = None) -> None:
+        """From a loaded ``source``, or from the ``memo`` of the same file read before (the source then loads when
+        something not in the memo is asked for)."""
         self.path = path
-        self._source = source
+        self._loaded = source
         self._catalog = catalog
-        self.format = source.format
-        self.truncated = source.truncated  # why the file ends early, or None
         self._fast: dict[int, bool] = {}  # channel key -> whether the struct decoders apply (see _fast_decoding)
         self._index: dict[int, list[int]] | None = None  # channel key -> positions of its messages, made on first use
-        self.metadata: dict[str, dict[str, Any]] = {
-            name: {key: _json_or_text(value) for key, value in values.items()}
-            for name, values in source.metadata.items()
-            if name == "rosgrade" or name.startswith("rosgrade.")
-        }
+        if memo is None:
+            assert source is not None
+            memo = memos.FileMemo((0, 0, 0), source.format, source.truncated, {
+                name: {key: _json_or_text(value) for key, value in values.items()}
+                for name, values in source.metadata.items()
+                if name == "rosgrade" or name.startswith("rosgrade.")
+            })
+        self._memo = memo
+        self.format = memo.format
+        self.truncated = memo.truncated  # why the file ends early, or None
+        self.metadata: dict[str, dict[str, Any]] = copy.deepcopy(memo.metadata)
 
     @classmethod
     def open(cls, path: str | Path, *, allow_truncated: bool = True) -> Recording:
         """Load our MCAP, a ROS 1 ``.bag``, a ROS 2 bag folder, ``.db3`` or ROS 2 MCAP.
 
         A truncated MCAP gives what could be read, with ``truncated`` saying why; ``allow_truncated=False``
-        makes that an error instead.
+        makes that an error instead. A file read before and unchanged since gives what was read then (see memo.py).
         """
-        source = load(path)
-        if source.truncated and not allow_truncated:
-            raise RecordingError(f"{path} is not a readable recording: {source.truncated}")
-        return cls(Path(path), source, default_catalog())
+        path = Path(path)
+        found = memos.identity(path)
+        memo = memos.find(path, found)
+        if memo is None:
+            source = load(path)
+            recording = cls(path, source, default_catalog())
+            if found is not None:
+                recording._memo.identity = found
+                memos.keep(path, recording._memo)
+        else:
+            recording = cls(path, None, default_catalog(), memo)
+        if recording.truncated and not allow_truncated:
+            raise RecordingError(f"{path} is not a readable recording: {recording.truncated}")
+        return recording
+
+    @property
+    def _source(self) -> Source:
+        if self._loaded is None:
+            self._loaded = load(self.path)
+        return self._loaded
 
     # -- generic access ---------------------------------------------------------------------------------------
 
@@ -100,6 +125,7 @@ class Recording:
             if (topic is None or c.topic == topic) and (type_name is None or c.type == type_name)
         ]
 
+    @memos.remembered
     def topics(self) -> list[TopicInfo]:
         """Every (topic, callerid) with its type and message count, sorted by topic."""
         counts = dict.fromkeys(self._source.channels, 0)
@@ -187,6 +213,7 @@ class Recording:
                 return min(pool)
         return None
 
+    @memos.remembered
     def odometry(self, topic: str | None = None) -> TimeSeries:
         """Pose and body twist from the robot's odometry topic (or ``topic``), stamped by the message headers."""
         topic = topic or self.odometry_topic()
@@ -197,6 +224,7 @@ class Recording:
             raise RecordingError(f"{self.path} has no nav_msgs/Odometry messages on {topic}")
         return series
 
+    @memos.remembered
     def ground_truth(self) -> TimeSeries | None:
         """The true world pose and body twist, or None when the recording has none (e.g. a real robot's bag)."""
         return self._pose_twist(GROUND_TRUTH_TOPIC)
@@ -247,6 +275,7 @@ class Recording:
             return list(named)
         return sorted({c.topic for c in self._channels() if c.type in COMMAND_TYPES})
 
+    @memos.remembered
     def commands(self, topic: str | None = None) -> CommandSeries:
         """Every Twist (or TwistStamped) on the command topics (or ``topic``) with who sent it, at record time."""
         topics = {topic} if topic else set(self.command_topics())
@@ -278,6 +307,7 @@ class Recording:
             msg = msg.twist
         return (msg.linear.x, msg.linear.y, msg.linear.z), (msg.angular.x, msg.angular.y, msg.angular.z)
 
+    @memos.remembered
     def transforms(self, topic: str | None = None) -> TransformSeries:
         """Every transform on /tf and /tf_static (or ``topic``), one row per TransformStamped, by header stamp."""
         stamps: list[int] = []
@@ -301,6 +331,7 @@ class Recording:
             rotation=table[:, 3:],
         )
 
+    @memos.remembered
     def output_lines(self) -> list[OutputLine]:
         """What the node printed (/rosgrade/stdout, /rosgrade/stderr) and logged (/rosout), in time order."""
         channels = [c for c in self._source.channels.values() if c.topic in OUTPUT_TOPICS and c.type in OUTPUT_TYPES]
@@ -311,6 +342,7 @@ class Recording:
             lines.append(OutputLine(t_ns / 1e9, OUTPUT_TOPICS[channel.topic], text))
         return lines
 
+    @memos.remembered
     def rosout(self) -> list[LogLine]:
         """Every /rosout message with its level and origin (node name, file, function, line), in time order."""
         lines = []
