@@ -138,6 +138,7 @@ class NodeProcess:
         self.marker = marker_prefix() + secrets.token_hex(8)
         precompile()
         self.peak_tasks = 0  # processes + threads seen in the node's sandbox when it was killed
+        self._init: tuple[int, int | None] | None = None  # the sandbox's init: (pid, start tick), see _sandbox_init
         workdir.mkdir(parents=True, exist_ok=True)
         script = Path(os.path.abspath(spec.script))
         try:
@@ -202,8 +203,18 @@ class NodeProcess:
 
     # -- finding the node's processes ----------------------------------------------------------------------------
     def _sandbox_init(self) -> int | None:
-        """bwrap's init process (pid 1 of the node's pid namespace), a child of the bwrap we started."""
-        kids = confine.children_of(self.popen.pid) if self._leader_held() else []
+        """bwrap's init process (pid 1 of the node's pid namespace), a child of the bwrap we started.
+
+        Found by a pass over /proc once, then only checked: still a child of our bwrap, started at the same tick (so
+        not another process given its pid): every limits check (once a wall second) asks several times."""
+        if not self._leader_held():
+            return None
+        if self._init is not None:
+            pid, started = self._init
+            if confine.parent_of(pid) == self.popen.pid and confine.started_at(pid) == started:
+                return pid
+        kids = confine.children_of(self.popen.pid)
+        self._init = (kids[0], confine.started_at(kids[0])) if kids else None
         return kids[0] if kids else None
 
     def _node_pid(self) -> int | None:

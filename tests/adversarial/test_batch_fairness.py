@@ -23,6 +23,7 @@ def _fake_node() -> NodeProcess:
     node.plan = confine.Plan(argv=[], cwd="/", home="/tmp", uid=None, sandboxed=True)
     node.popen = types.SimpleNamespace(pid=BWRAP, returncode=None)
     node.marker = "test-marker"
+    node._init = None
     return node
 
 
@@ -44,3 +45,22 @@ def test_a_finished_sandbox_does_not_claim_the_next_namespace_given_its_id(monke
     node.popen.returncode = -9
     _world(monkeypatch, [OTHER_STUDENT], {OTHER_STUDENT: SANDBOX_NS}, {})
     assert node.leftovers() == []
+
+
+def test_the_sandbox_init_is_looked_up_once_and_then_only_checked(monkeypatch):
+    node = _fake_node()
+    scans = []
+    parents, started = {INIT: BWRAP, NODE: INIT}, {INIT: 100}
+    monkeypatch.setattr(confine, "children_of", lambda pid: scans.append(pid) or [p for p in (INIT, NODE)
+                                                                                  if parents.get(p) == pid])
+    monkeypatch.setattr(confine, "parent_of", lambda pid: parents.get(pid))
+    monkeypatch.setattr(confine, "started_at", lambda pid: started.get(pid))
+    assert [node._sandbox_init() for _ in range(3)] == [INIT] * 3 and scans == [BWRAP]
+    # The init's pid now belongs to a process started later (the sandbox ended, the pid was given again): not ours.
+    started[INIT] = 200
+    del parents[INIT]
+    assert node._sandbox_init() is None and scans == [BWRAP, BWRAP]
+    parents[INIT] = BWRAP
+    assert node._sandbox_init() == INIT and node._init == (INIT, 200)
+    node.popen.returncode = 0  # bwrap reaped: its children are nobody's to claim
+    assert node._sandbox_init() is None
