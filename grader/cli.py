@@ -375,8 +375,14 @@ def cmd_bench(args: argparse.Namespace) -> int:
     err = Console(stderr=True)
     check_bench = _module("grader.check_bench")
     figures: dict[str, Any] = {"load_average_before": check_bench.load_average()}
-    with err.status("Measuring physics speed …"):
-        physics = _module("sim.bench").physics_benchmark(robot=args.robot, sim_seconds=args.seconds)
+    samples: list[dict[str, Any]] = []
+
+    def measure_physics() -> None:
+        with err.status(f"Measuring physics speed (best of {args.repeats}) …"):
+            samples.extend(_module("sim.bench").physics_benchmark(robot=args.robot, sim_seconds=args.seconds)
+                           for _ in range(max(1, args.repeats)))
+
+    measure_physics()
     runtime: dict[str, Any] = {}
     if not args.no_node_runs:
         move_circle = args.reference / "move_circle.py" if args.reference else None
@@ -395,6 +401,11 @@ def cmd_bench(args: argparse.Namespace) -> int:
         for n in dict.fromkeys((1, jobs)):
             with err.status(f"Checking {escape(str(args.reference))} with -j {n} (best of {args.repeats}) …"):
                 checks.append(check_bench.best_of(args.reference, n, args.repeats))
+    if checks:
+        measure_physics()  # again after the checks: the machine's speed drifts, and the checks keep their best too
+    # Load only ever slows a run down: the fastest sample is the physics figure, as the best check is the check's.
+    physics = {**max(samples, key=lambda sample: sample["rtf"]),
+               "rtf_samples": " ".join(f"{sample['rtf']:.0f}" for sample in samples)}
     figures["load_average_after"] = check_bench.load_average()
     if args.json:
         print(json.dumps({"physics": physics, "runtime": runtime, "check": [_check_dict(c, physics) for c in checks],

@@ -141,6 +141,21 @@ def test_bench_times_a_whole_check_at_j1_and_jn(grading, monkeypatch, tmp_path, 
     assert data["load_average_before"] == "0.10 0.20 0.30"
 
 
+def test_bench_physics_figure_is_the_fastest_of_samples_before_and_after_the_checks(grading, monkeypatch, tmp_path,
+                                                                                    capsys):
+    rtfs = iter([150.0, 160.0, 184.2, 90.0])  # two before the checks, two after: the machine sped up, then slowed
+    module = types.ModuleType("sim.bench")
+    module.physics_benchmark = lambda robot="turtlebot3_waffle", sim_seconds=60.0: {"rtf": next(rtfs), "cpu_rtf": 1.0}
+    fakes.install(monkeypatch, "sim.bench", module)
+    fakes.install(monkeypatch, "grader.check_bench", check_bench_module([]))
+    (tmp_path / "refs").mkdir()
+    assert main(["bench", "--reference", str(tmp_path / "refs"), "-j", "1", "--no-node-runs", "--repeats", "2",
+                 "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["physics"]["rtf"] == 184.2 and data["physics"]["rtf_samples"] == "150 160 184 90"
+    assert data["check"][0]["of_physics_rtf"] == round(115.0 / 184.2, 3)
+
+
 def test_bench_prints_the_stage_table_and_the_physics_ratio(grading, monkeypatch, tmp_path, capsys):
     fakes.install(monkeypatch, "sim.bench", bench_module())
     fakes.install(monkeypatch, "grader.check_bench", check_bench_module([]))
