@@ -724,7 +724,9 @@ def build_parser() -> argparse.ArgumentParser:
                        help="time each figure N times and keep the best (default 3)")
     bench.add_argument("--no-node-runs", action="store_true", help="skip the single-node run figures")
     bench.add_argument("--robot", default="turtlebot3_waffle", help="robot for the physics figure (default turtlebot3_waffle)")
-    bench.add_argument("--seconds", type=float, default=60.0, help="simulated seconds for the physics figure")
+    bench.add_argument("--seconds", type=float, default=300.0,
+                       help="simulated seconds for each physics sample (default 300: a few wall seconds, long "
+                            "enough to average a virtual machine's speed drift, as a whole check does)")
     bench.add_argument("--json", action="store_true", help="print the figures as JSON")
     bench.set_defaults(handler=cmd_bench)
 
