@@ -14,6 +14,7 @@ runs on wall time, and a Ctrl+C can race rclpy's own signal thread.
 from __future__ import annotations
 
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -28,7 +29,11 @@ from real_ros2 import RealRos2, RealRos2Error, unavailable_reason  # noqa: E402
 from rosgrade_side2 import run_ours  # noqa: E402
 
 pytestmark = pytest.mark.slow
-REAL_ATTEMPTS = 3
+REAL_ATTEMPTS = 5
+# A pause before each re-run, so that a passing slowdown of the machine does not hit every attempt. The session's first
+# probe (p01) once failed 3 times in a row in CI, where rclpy's signal thread lost its race with the except block in
+# each run (ok() True there and the zero published), which the reference measured once in 8 quiet runs for ok().
+RETRY_PAUSE_S = 2.0
 IDS = [c.id for c in CASES]
 
 
@@ -45,6 +50,8 @@ class _RealCache:
         runs = self.results.setdefault(case.id, [])
         for attempt in range(REAL_ATTEMPTS):
             if attempt == len(runs):
+                if attempt:
+                    time.sleep(RETRY_PAUSE_S)
                 runs.append(self._run(case))
             yield runs[attempt]
 
