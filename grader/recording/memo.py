@@ -26,9 +26,10 @@ F = TypeVar("F", bound=Callable[..., Any])
 
 @dataclass
 class FileMemo:
-    """One file's header facts (format, truncation, metadata) and the results read from it so far."""
+    """One file's header facts (format, truncation, metadata) and the results read from it so far; ``identity`` is
+    the file's when it was read (None: a file that is not kept, such as a bag folder)."""
 
-    identity: tuple[int, int, int]
+    identity: tuple[int, int, int] | None
     format: str
     truncated: str | None
     metadata: dict[str, dict[str, Any]]
@@ -55,17 +56,19 @@ def find(path: Path, found: tuple[int, int, int] | None) -> FileMemo | None:
     """The memo of the file at ``path`` if it was made from the same content (``found``: its identity now)."""
     if found is None:
         return None
-    memo = _memos.get(str(path.resolve()))
+    key = str(path.resolve())
+    memo = _memos.get(key)
     if memo is None or memo.identity != found:
         return None
-    _memos.move_to_end(str(path.resolve()))
+    _memos.move_to_end(key)
     return memo
 
 
 def keep(path: Path, memo: FileMemo) -> None:
     """Remember ``memo`` for the file at ``path``, forgetting the least recently used beyond KEPT_FILES."""
-    _memos[str(path.resolve())] = memo
-    _memos.move_to_end(str(path.resolve()))
+    key = str(path.resolve())
+    _memos[key] = memo
+    _memos.move_to_end(key)
     while len(_memos) > KEPT_FILES:
         _memos.popitem(last=False)
 

@@ -67,22 +67,14 @@ def _json_or_text(value: str) -> Any:
 class Recording:
     """Read-only view of one recording; open with `Recording.open`."""
 
-    def __init__(self, path: Path, source: Source | None, catalog: MessageCatalog,
-                 memo: memos.FileMemo | None = None) -> None:
-        """From a loaded ``source``, or from the ``memo`` of the same file read before (the source then loads when
-        something not in the memo is asked for)."""
+    def __init__(self, path: Path, source: Source | None, catalog: MessageCatalog, memo: memos.FileMemo) -> None:
+        """A view of the file at ``path`` through its ``memo``; ``source`` is the file loaded, or None until something
+        not in the memo is asked for."""
         self.path = path
         self._loaded = source
         self._catalog = catalog
         self._fast: dict[int, bool] = {}  # channel key -> whether the struct decoders apply (see _fast_decoding)
         self._index: dict[int, list[int]] | None = None  # channel key -> positions of its messages, made on first use
-        if memo is None:
-            assert source is not None
-            memo = memos.FileMemo((0, 0, 0), source.format, source.truncated, {
-                name: {key: _json_or_text(value) for key, value in values.items()}
-                for name, values in source.metadata.items()
-                if name == "rosgrade" or name.startswith("rosgrade.")
-            })
         self._memo = memo
         self.format = memo.format
         self.truncated = memo.truncated  # why the file ends early, or None
@@ -98,14 +90,17 @@ class Recording:
         path = Path(path)
         found = memos.identity(path)
         memo = memos.find(path, found)
+        source = None
         if memo is None:
             source = load(path)
-            recording = cls(path, source, default_catalog())
+            memo = memos.FileMemo(found, source.format, source.truncated, {
+                name: {key: _json_or_text(value) for key, value in values.items()}
+                for name, values in source.metadata.items()
+                if name == "rosgrade" or name.startswith("rosgrade.")
+            })
             if found is not None:
-                recording._memo.identity = found
-                memos.keep(path, recording._memo)
-        else:
-            recording = cls(path, None, default_catalog(), memo)
+                memos.keep(path, memo)
+        recording = cls(path, source, default_catalog(), memo)
         if recording.truncated and not allow_truncated:
             raise RecordingError(f"{path} is not a readable recording: {recording.truncated}")
         return recording
