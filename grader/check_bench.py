@@ -20,7 +20,7 @@ from grader.batch import grade_one
 STAGE_ORDER = (
     "node start-up", "world set-up (model, run to the start)", "physics and sensors",
     "world messages (encode, record, queue)", "node steps (channel, node publications)", "waiting for nodes",
-    "stopping nodes", "reading recordings", "scoring", "advice", "plots", "report files",
+    "world run ahead and taken back", "stopping nodes", "reading recordings", "scoring", "advice", "plots", "report files",
 )
 OTHER = "other (grader bookkeeping, recording close)"
 
@@ -34,10 +34,11 @@ class CheckTiming:
     cpu_s: float  # busy CPU seconds of the whole machine while the check ran (see _cpu_s)
     sim_s: float
     runs: int
-    frames: int
+    frames: int  # BATCH frames: round trips between the grader and a node
     stages: dict[str, float] = field(default_factory=dict)  # exclusive wall seconds, summed over worker processes
     score: float = 0.0
     max_score: float = 0.0
+    moments: int = 0  # later moments nodes ran on their own, without a round trip
 
     @property
     def sim_per_wall(self) -> float:
@@ -80,7 +81,8 @@ def time_check(submission: Path, jobs: int) -> CheckTiming:
         wall, cpu = time.perf_counter() - started, _cpu_s() - cpu0
     return CheckTiming(jobs, wall, cpu, stages.get("# simulated milliseconds", 0.0) / 1000,
                        int(stages.get("# runs", 0)), int(stages.get("# node steps (BATCH frames)", 0)),
-                       stages, report.score, report.max_score)
+                       stages, report.score, report.max_score,
+                       int(stages.get("# moments run without a round trip", 0)))
 
 
 def best_of(submission: Path, jobs: int, repeats: int) -> CheckTiming:

@@ -432,6 +432,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
 def _check_dict(check: Any, physics: dict[str, Any]) -> dict[str, Any]:
     return {"jobs": check.jobs, "wall_s": round(check.wall_s, 3), "cpu_s": round(check.cpu_s, 3),
             "sim_s": round(check.sim_s, 3), "runs": check.runs, "frames": check.frames,
+            "moments_without_round_trip": check.moments,
             "sim_s_per_wall_s": round(check.sim_per_wall, 2), "sim_s_per_cpu_s": round(check.sim_per_cpu, 2),
             "of_physics_rtf": round(check.sim_per_wall / physics["rtf"], 3),
             "of_physics_cpu_rtf": round(check.sim_per_cpu / physics["cpu_rtf"], 3) if physics.get("cpu_rtf") else None,
@@ -443,8 +444,9 @@ def _print_checks(console: Console, checks: list[Any], physics: dict[str, Any]) 
     """The per-stage breakdown of the -j 1 check, then every -j figure against the physics real-time factor."""
     single = checks[0]
     stages = Table(title=f"where the -j 1 check's {single.wall_s:.1f} s go ({single.runs} runs, {single.frames} "
-                         f"node steps, {single.sim_s:.0f} s simulated)")
-    for column in ("Stage", "Seconds", "Share", "Per node step [µs]"):
+                         f"round trips to nodes and {single.moments} moments nodes ran without one, "
+                         f"{single.sim_s:.0f} s simulated)")
+    for column in ("Stage", "Seconds", "Share", "Per round trip [µs]"):
         stages.add_column(column, justify="left" if column == "Stage" else "right")
     for name, seconds in single.breakdown():
         per_step = f"{seconds / single.frames * 1e6:.0f}" if single.frames else ""

@@ -16,6 +16,7 @@ from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 
 import mujoco
+import numpy as np
 
 from sim.base_driver import BaseDriver, CommandLatch, make_driver
 from sim.clock import last_step_at, step_ns, steps_per_tick
@@ -31,6 +32,9 @@ GROUND_TRUTH_HZ = 50  # above every odometry rate (30, 50 Hz); each sample is a 
 GROUND_TRUTH_TOPIC = "/ground_truth/odom"
 GROUND_TRUTH_FRAME = "world"
 TF_TOPIC = "/tf"
+# What a snapshot keeps of MuJoCo: time, qpos, qvel, act, warm start, controls and applied forces (mj_step reads
+# nothing else; the derived quantities it leaves behind are recomputed by the next step before anything reads them).
+_INTEGRATION = mujoco.mjtState.mjSTATE_INTEGRATION
 NO_SCRIPT_NS = 2**63  # "the next scripted command" once there is none: later than any sim time
 START_STATES = 16  # worlds at their start kept per process (each holds an MjData copy, about 0.5 MB resident)
 
@@ -69,6 +73,31 @@ _start_states: OrderedDict[str, _StartState] = OrderedDict()  # least recently u
 
 
 @dataclass(frozen=True)
+class Snapshot:
+    """Everything a world's future depends on, at one time: ``World.restore`` makes the world continue from here
+    bit for bit as it did the first time (the session's rollback of a speculative advance).
+
+    As in ``_StartState``, the latch, driver and odometry are shallow copies (their values are rebound, never changed
+    in place); a sensor with state is referenced by the schedule, so its attributes are kept and put back in place.
+    """
+
+    physics: np.ndarray  # MuJoCo's integration state (mj_getState), all mj_step needs to go on exactly
+    latch: CommandLatch
+    driver: BaseDriver
+    odometry: WheelOdometry | WorldPoseOdometry
+    sensor_states: tuple[dict, ...]
+    k: int
+    time_ns: int
+    command: tuple[float, float]
+    wheel_targets: tuple[float, float]
+    estimate: Estimate
+    next_script: int
+    next_script_ns: int
+    pending: tuple[Sample, ...]
+    schedule: _Schedule
+
+
+@dataclass(frozen=True)
 class _Schedule:
     """The ticks of one set of heard sensors, repeating every ``cycle`` steps."""
 
@@ -99,6 +128,7 @@ class World(ScenarioTimes):
         self.data = mujoco.MjData(self.model)
         # Views of MjData's buffers, which never move: the ticks read them without going through the binding.
         self._qpos, self._qvel, self._ctrl = self.data.qpos, self.data.qvel, self.data.ctrl
+        self._state_size = mujoco.mj_stateSize(self.model, _INTEGRATION)
         self._wheel_qvel = robot.wheel_qvel
         self._wheel_ctrl = robot.wheel_ctrl
         sensors = self.mode.sensors
@@ -283,6 +313,27 @@ class World(ScenarioTimes):
             "command_linear": self._command[0],
             "command_angular": self._command[1],
         }
+
+    def snapshot(self) -> Snapshot:
+        """The world as it is now, to ``restore`` later (a few microseconds)."""
+        physics = np.empty(self._state_size)
+        mujoco.mj_getState(self.model, self.data, physics, _INTEGRATION)
+        return Snapshot(physics, copy.copy(self._latch), copy.copy(self._driver), copy.copy(self._odometry),
+                        tuple(dict(vars(sensor)) for _, sensor in self._sensors if sensor.keeps_state),
+                        self._k, self._time_ns, self._command, self._wheel_targets, self._estimate,
+                        self._next_script, self._next_script_ns, tuple(self._pending), self._schedule)
+
+    def restore(self, snapshot: Snapshot) -> None:
+        """Put the world back to ``snapshot`` (taken from this world): what follows is what followed it then."""
+        mujoco.mj_setState(self.model, self.data, snapshot.physics, _INTEGRATION)
+        self._latch, self._driver = copy.copy(snapshot.latch), copy.copy(snapshot.driver)
+        self._odometry = copy.copy(snapshot.odometry)
+        for sensor, state in zip((s for _, s in self._sensors if s.keeps_state), snapshot.sensor_states):
+            vars(sensor).update(state)
+        self._k, self._time_ns, self._command = snapshot.k, snapshot.time_ns, snapshot.command
+        self._wheel_targets, self._estimate = snapshot.wheel_targets, snapshot.estimate
+        self._next_script, self._next_script_ns = snapshot.next_script, snapshot.next_script_ns
+        self._pending, self._schedule = list(snapshot.pending), snapshot.schedule
 
     # -- the loop ------------------------------------------------------------------------------------------------
 

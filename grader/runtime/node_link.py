@@ -210,13 +210,30 @@ class NodeLink:
         self._send(ch.encode_json(ch.START, start))
         return hello.model_dump()
 
-    def run_until_wait(self, t_ns: int, sink: Callable[[object], ServiceReply | None]) -> int | None:
+    def run_until_wait(self, t_ns: int, sink: Callable[[object], ServiceReply | None], moments: int = 1,
+                       at_moment: Callable[[int], int] | None = None) -> int | None:
         """Read frames until the node yields, passing each event at t_ns to sink; returns wake_ns or None.
 
-        A ServiceCall is answered at once with the ServiceReply the sink returns for it (the node waits for it)."""
+        A ServiceCall is answered at once with the ServiceReply the sink returns for it (the node waits for it).
+        After a BATCH of several ``moments`` the node's first frame says which moment it stopped at: ``at_moment``
+        gets that number and returns the moment's time, at which everything that follows happens."""
         self._deadline = time.monotonic() + self._silent_wall_s
         while True:
             kind, payload = self._read()
+            if moments > 1:
+                if kind != ch.MOMENT:
+                    raise ProtocolViolation(f"sent {ch.KIND_NAMES.get(kind, kind)} after a batch of {moments} "
+                                            "moments without saying first which moment it was at (MOMENT)")
+                try:
+                    index = ch.split_moment(payload)
+                except ch.ChannelError as exc:
+                    raise ProtocolViolation(str(exc)) from None
+                if not 1 <= index <= moments:
+                    raise ProtocolViolation(f"MOMENT {index} of a batch of {moments} moments")
+                t_ns, moments = at_moment(index), 1
+                continue
+            if kind == ch.MOMENT:
+                raise ProtocolViolation("MOMENT outside a batch of several moments, or a second one")
             if kind == ch.WAIT:
                 plain, wake = ch.plain_wait(payload)
                 if not plain:
@@ -394,11 +411,15 @@ class NodeLink:
         self._send(ch.encode_header_bytes(ch.REPLY, {"status": reply.status, "error": reply.error}, reply.response))
 
     def resume(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None,
-               connections: dict[int, int] | None = None, params: list[tuple[str, object]] | None = None) -> None:
+               connections: dict[int, int] | None = None, params: list[tuple[str, object]] | None = None,
+               later: list[tuple[int, int, list[tuple[int, bytes]]]] = ()) -> None:
         """Send one BATCH frame: the new time (with changed connection counts per topic handle, and the parameter
         changes others made, in order), messages for the node's subscribers and maybe Ctrl+C; the node runs until
-        its next WAIT."""
+        its next WAIT. ``later``: (t_ns, clock_ns, deliveries) of later moments it may run on its own."""
         header: dict = {"t_ns": t_ns, "clock_ns": clock_ns}
+        if later:
+            header["moments"] = [[t, clock, len(items)] for t, clock, items in later]
+            deliveries = deliveries + [item for _, _, items in later for item in items]
         if connections:
             header["connections"] = {str(ident): count for ident, count in connections.items()}
         if params:

@@ -55,6 +55,9 @@ EXIT_WAIT_WALL_S = 5.0
 WORKROOT_PREFIX = "rosgrade-node-"
 # Wall seconds between two looks at what all of a node's processes use together (a /proc walk: not every step).
 USAGE_PERIOD_S = 1.0
+# The most later moments one BATCH carries (0: none, the plain lockstep). A node that stops early gets fewer next
+# time: the world run ahead past the moment it stopped at is taken back, and so wasted.
+MAX_MOMENTS = 64
 
 
 class RunError(Exception):
@@ -84,10 +87,53 @@ class _Node:
     told_connections: dict[int, int] = field(default_factory=dict)
     term_ns: int | None = None
     kill_ns: int | None = None
+    # How far the world runs ahead of it: later moments its next BATCH may carry (doubled while it runs them all),
+    # and, after batches whose first moment it already acted at, delivery steps taken one by one before trying again.
+    moments_cap: int = 1
+    misses: int = 0
+    pause: int = 0
 
     @property
     def callerid(self) -> str:
         return self.link.state.name or "/unnamed"
+
+
+@dataclass(frozen=True)
+class _Encoded:
+    """One message of the world's, ready to record (and to deliver, when ``to_nodes``)."""
+
+    topic: str
+    type: str
+    data: bytes
+    t_ns: int
+    callerid: str
+    origin: str
+    to_nodes: bool
+
+
+@dataclass
+class _Chunk:
+    """One advance of the world run ahead: its target time, what it published, the deliveries to the node, and the
+    message sequence numbers after it."""
+
+    target: int
+    encoded: list[_Encoded]
+    deliveries: list[tuple[int, bytes]]
+    seq_after: dict[str, int]
+
+
+@dataclass
+class _Speculation:
+    """A world run ahead of a node from the batch's time ``t_ns``, not recorded until the node says how far it got."""
+
+    node: _Node
+    t_ns: int
+    snapshot: object
+    seq_before: dict[str, int]
+    chunks: list[_Chunk] = field(default_factory=list)
+    later: list[tuple[int, int, list[tuple[int, bytes]]]] = field(default_factory=list)  # (t, clock, deliveries)
+    moment_chunks: list[int] = field(default_factory=list)  # per later moment, the chunks up to and including its own
+    settled: bool = False
 
 
 class Session:
@@ -333,15 +379,122 @@ class Session:
             self._run_node(node, link, t, shutdown, first)
 
     def _run_node(self, node: _Node, link: NodeLink, t: int, shutdown: str | None, first: bool) -> None:
+        ahead: _Speculation | None = None
+        now = t  # the time of what the node does: a later moment's, once it says it stopped there
+
+        def at_moment(index: int) -> int:
+            nonlocal now
+            now = self._settle(ahead, index)
+            return now
+
         try:
             if not first:
-                clock = (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if link.state.init_ns is not None else 0
+                clock = self._clock_ns(link, t)
                 deliveries, node.deliveries = node.deliveries, []
-                link.resume(t, clock, deliveries, shutdown, self._connection_changes(node, t),
-                            self.params.take(self.nodes.index(node)))
-            node.wake_ns = link.run_until_wait(t, lambda event: self._node_event(node, event, t))
+                changes = self._connection_changes(node, t)
+                params = self.params.take(self.nodes.index(node))
+                if shutdown is None and deliveries:
+                    ahead = self._speculate(node, t)
+                link.resume(t, clock, deliveries, shutdown, changes, params,
+                            later=ahead.later if ahead is not None else ())
+            node.wake_ns = link.run_until_wait(t, lambda event: self._node_event(node, event, now),
+                                               len(ahead.later) + 1 if ahead is not None else 1, at_moment)
         except (NodeExited, NodeSilent, ProtocolViolation, OutputLimitExceeded, EndpointLimitExceeded) as exc:
-            self._node_failed(node, exc, t)
+            if ahead is not None and not ahead.settled:
+                # it ended (or broke the channel) before saying which moment it was at: the batch's own time
+                now = self._settle(ahead, 1)
+            self._node_failed(node, exc, now)
+
+    @staticmethod
+    def _clock_ns(link: NodeLink, t: int) -> int:
+        """/clock as the node has it at t: the last 10 ms tick (0 until init_node, as before /clock connects)."""
+        return (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if link.state.init_ns is not None else 0
+
+    # -- running the world ahead of a node (batches of moments) ------------------------------------------------
+    def _speculate(self, node: _Node, t: int) -> _Speculation | None:
+        """Run the world ahead of a node that is only receiving messages at t, up to its wake-up, for one BATCH of
+        moments; None when the lockstep must go step by step (several nodes, a shutdown, a world without rollback).
+
+        The later moments are the times the lockstep would stop at for this node, with the same deliveries: until
+        the node's wake-up (itself the last moment) or anything else that would change its batches (a publisher
+        connecting, the shutdown, the end). What the world publishes meanwhile is encoded but not yet recorded."""
+        snapshot = getattr(self.world, "snapshot", None)
+        if not MAX_MOMENTS or snapshot is None or node.term_ns is not None or sum(n.alive for n in self.nodes) != 1:
+            return None
+        if node.pause:
+            node.pause -= 1
+            return None
+        wake = node.wake_ns
+        if wake is not None and wake <= t:
+            return None
+        bounds = [self.end_ns, *self._latched_connect_times(t)]
+        if self.shutdown_ns is not None and not self.shutdown_sent:
+            bounds.append(self.shutdown_ns)
+        bounds += [ready for pub in node.link.state.publishers.values()
+                   if not pub.closed and (ready := self._ready_ns(pub)) > t]
+        bound = min(bounds)
+        last = wake if wake is not None and wake < bound else None  # the wake-up, when it comes first
+        ahead = _Speculation(node, t, snapshot(), dict(self.seq))
+        started = time.perf_counter()
+        while len(ahead.later) < node.moments_cap:
+            due = self.world.next_output_ns(self._listened)
+            if due is not None and due < (bound if last is None else last):
+                target = due
+            elif last is not None:
+                target = last
+            else:
+                break
+            samples = self.world.advance_to(target)
+            stepped = time.perf_counter()
+            timing.add("physics and sensors", stepped - started)
+            encoded = [self._encode(sample) for sample in samples]
+            deliveries = [(sub.ident, item.data) for item in encoded if item.to_nodes
+                          for sub in node.link.state.subscribers.values()
+                          if sub.topic == item.topic and sub.type == item.type and not sub.closed]
+            ahead.chunks.append(_Chunk(target, encoded, deliveries, dict(self.seq)))
+            if deliveries or target == last:
+                ahead.later.append((target, self._clock_ns(node.link, target), deliveries))
+                ahead.moment_chunks.append(len(ahead.chunks))
+            started = time.perf_counter()
+            timing.add("world messages (encode, record, queue)", started - stepped)
+            if target == last:
+                break
+        if not ahead.later:  # only messages nobody hears before the bound: nothing to batch
+            self._take_back(ahead, 0)
+            return None
+        return ahead
+
+    def _settle(self, ahead: _Speculation, index: int) -> int:
+        """The node stopped at moment ``index`` of the batch: record what the world did up to that moment and take
+        the world back there if it ran further; returns the moment's time."""
+        kept = ahead.moment_chunks[index - 2] if index > 1 else 0
+        for chunk in ahead.chunks[:kept]:
+            for item in chunk.encoded:
+                self._commit(item, queue=False)
+        self._take_back(ahead, kept)
+        ahead.settled = True
+        node = ahead.node
+        if index == 1:  # it acted at once: the lockstep is cheaper for a while
+            node.misses += 1
+            node.moments_cap, node.pause = 1, min(2 ** node.misses, MAX_MOMENTS)
+        else:
+            node.misses = 0
+            node.moments_cap = min(node.moments_cap * 2, MAX_MOMENTS) if index > len(ahead.later) else index - 1
+        timing.count("moments run without a round trip", index - 1)
+        return ahead.later[index - 2][0] if index > 1 else ahead.t_ns
+
+    def _take_back(self, ahead: _Speculation, kept: int) -> None:
+        """Put the world back where it was after the first ``kept`` chunks run ahead (MuJoCo's state and the world's
+        own, then the same advances again: bit for bit what the lockstep would have)."""
+        if kept == len(ahead.chunks):
+            return
+        started = time.perf_counter()
+        self.world.restore(ahead.snapshot)
+        for chunk in ahead.chunks[:kept]:
+            self.world.advance_to(chunk.target)
+        self.seq = dict(ahead.chunks[kept - 1].seq_after) if kept else ahead.seq_before
+        timing.add("world run ahead and taken back", time.perf_counter() - started)
+        timing.count("world advances taken back", len(ahead.chunks) - kept)
 
     # -- what nodes do -----------------------------------------------------------------------------------------
     def _node_event(self, node: _Node, event: object, t: int) -> ServiceReply | None:
@@ -587,19 +740,25 @@ class Session:
 
     def _world_sample(self, sample: object) -> None:
         """Record one thing the world did; deliver it to subscribers when its topic is declared for nodes."""
-        if isinstance(sample, CommandSample):  # the scripted driver's command: recorded as the grader's
-            self._recorder.write(sample.topic, self.wire.twist_type, self.wire.twist(sample.linear, sample.angular),
-                                 sample.t_ns,
-                                 callerid=DRIVER_CALLERID, origin="grader")
-            return
-        publication = self.publications[sample.topic]
-        data = self.wire.encode(sample, self._next_seq(sample.topic))
-        self._recorder.write(sample.topic, publication.type, data, sample.t_ns, callerid=self.world.node_name,
-                             origin="world")
-        if publication.to_nodes:
-            self._deliver(sample.topic, publication.type, data)
+        self._commit(self._encode(sample), queue=True)
 
-    def _deliver(self, topic: str, type_name: str, data: bytes) -> None:
+    def _encode(self, sample: object) -> _Encoded:
+        """A world sample as the message recorded (a scripted driver's command is recorded as the grader's)."""
+        if isinstance(sample, CommandSample):
+            return _Encoded(sample.topic, self.wire.twist_type, self.wire.twist(sample.linear, sample.angular),
+                            sample.t_ns, DRIVER_CALLERID, "grader", False)
+        publication = self.publications[sample.topic]
+        return _Encoded(sample.topic, publication.type, self.wire.encode(sample, self._next_seq(sample.topic)),
+                        sample.t_ns, self.world.node_name, "world", publication.to_nodes)
+
+    def _commit(self, item: _Encoded, queue: bool) -> None:
+        """Record a world message and count it for its subscribers, queueing it for their next batch if ``queue``
+        (a later moment's deliveries went out in the batch already)."""
+        self._recorder.write(item.topic, item.type, item.data, item.t_ns, callerid=item.callerid, origin=item.origin)
+        if item.to_nodes:
+            self._deliver(item.topic, item.type, item.data, queue)
+
+    def _deliver(self, topic: str, type_name: str, data: bytes, queue: bool = True) -> None:
         """Queue a message the world publishes for every live subscriber of its topic and type (next batch)."""
         self.world_topics.add((topic, type_name))
         for node in self.nodes:
@@ -607,7 +766,8 @@ class Session:
                 continue
             for sub in node.link.state.subscribers.values():
                 if sub.topic == topic and sub.type == type_name and not sub.closed:
-                    node.deliveries.append((sub.ident, data))
+                    if queue:
+                        node.deliveries.append((sub.ident, data))
                     sub.count += 1
 
     # -- metadata ----------------------------------------------------------------------------------------------

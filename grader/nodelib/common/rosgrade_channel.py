@@ -10,7 +10,7 @@ import os
 import re
 import struct
 
-PROTOCOL = 4
+PROTOCOL = 5
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000
@@ -37,6 +37,7 @@ EXCEPTION = 9
 WAIT = 10
 CALL = 11
 PARAM = 12
+MOMENT = 13
 # grader -> node
 START = 32
 BATCH = 33
@@ -56,11 +57,11 @@ SERVICE_STATUSES = frozenset({SERVICE_OK, SERVICE_UNAVAILABLE, SERVICE_REFUSED, 
 KIND_NAMES = {
     HELLO: "HELLO", INIT: "INIT", ADVERTISE: "ADVERTISE", SUBSCRIBE: "SUBSCRIBE", UNREGISTER: "UNREGISTER",
     PUBLISH: "PUBLISH", LOG: "LOG", OUTPUT: "OUTPUT", EXCEPTION: "EXCEPTION", WAIT: "WAIT", CALL: "CALL",
-    PARAM: "PARAM",
+    PARAM: "PARAM", MOMENT: "MOMENT",
     START: "START", BATCH: "BATCH", REPLY: "REPLY",
 }
 NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT, CALL,
-                        PARAM})
+                        PARAM, MOMENT})
 GRADER_KINDS = frozenset({START, BATCH, REPLY})
 JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT, START, PARAM})
 
@@ -96,7 +97,9 @@ def encode_id_bytes(kind: int, ident: int, data: bytes) -> bytes:
 def encode_batch(header: dict, deliveries: list[tuple[int, bytes]]) -> bytes:
     """A BATCH frame: everything the node gets at one world time, so one write and one read per wake-up.
 
-    Payload: ``u32 header length | header JSON | (u32 topic handle | u32 length | message bytes)*``.
+    Payload: ``u32 header length | header JSON | (u32 topic handle | u32 length | message bytes)*``. A header's
+    ``moments`` (``[[t_ns, clock_ns, deliveries], ...]``) are later times the node may run on its own: the last
+    that many deliveries belong to them, in order, and the rest to the batch's own time.
     """
     t_ns, clock_ns = header.get("t_ns"), header.get("clock_ns")
     if len(header) == 2 and type(t_ns) is int and type(clock_ns) is int and t_ns >= 0 and clock_ns >= 0:
@@ -107,6 +110,18 @@ def encode_batch(header: dict, deliveries: list[tuple[int, bytes]]) -> bytes:
     for ident, data in deliveries:
         parts += (_ID_LEN.pack(ident, len(data)), data)
     return encode(BATCH, b"".join(parts))
+
+
+def encode_moment(index: int) -> bytes:
+    """A MOMENT frame: the node ran the moment ``index`` (1 is the batch's own time) of a batch of several moments,
+    did something there (everything it sends next happens then) or stopped after it, and skipped the later ones."""
+    return encode(MOMENT, _ID.pack(index))
+
+
+def split_moment(payload: bytes) -> int:
+    if len(payload) != 4:
+        raise ChannelError("MOMENT frame payload is not one 4-byte moment number")
+    return _ID.unpack(payload)[0]
 
 
 def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:

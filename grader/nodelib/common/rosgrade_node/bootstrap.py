@@ -72,10 +72,12 @@ def start(channel: str) -> None:
 
 
 def _flush() -> None:
-    """Registered first, so it runs last at exit: stop the CPU timer and flush the streams."""
+    """Registered first, so it runs last at exit: stop the CPU timer, flush the streams and, in a batch of moments,
+    tell the grader the moment the node ends at."""
     signal.setitimer(signal.ITIMER_VIRTUAL, 0, 0)
     for stream in (sys.stdout, sys.stderr):
         try:
             stream.flush()
         except (OSError, ValueError):
             pass
+    runtime.link.send_pending_moment()

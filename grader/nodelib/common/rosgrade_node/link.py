@@ -13,12 +13,23 @@ _OUTPUT_CHUNK = 64 * 1024
 
 
 @dataclass
+class Moment:
+    """A later time of a batch: its clock and the messages delivered then."""
+
+    t_ns: int
+    clock_ns: int
+    deliveries: list[tuple[int, bytes]]
+
+
+@dataclass
 class Batch:
     """What the grader sent in answer to a WAIT (one BATCH frame)."""
 
     t_ns: int
     clock_ns: int
     deliveries: list[tuple[int, bytes]] = field(default_factory=list)
+    # Later times, in order, that the node runs on its own while what it does is invisible (see Scheduler).
+    moments: list[Moment] = field(default_factory=list)
     shutdown: str | None = None
     connections: dict[int, int] = field(default_factory=dict)  # changed connection counts per topic handle
     # Parameter changes other nodes (or the world) made since the last batch, in order: [name, value (None: deleted)].
@@ -32,14 +43,32 @@ class Link:
         self._reader = ch.FrameReader(read_fd, ch.GRADER_KINDS)
         self._wfd = write_fd
         self._lock = threading.Lock()
+        self.frames_sent = 0
+        # The moment of a batch of moments the node is at, until the grader has been told (a MOMENT frame goes out
+        # in the same write as the next frame, or alone at exit).
+        self.pending_moment: int | None = None
 
     def send(self, frame: bytes) -> None:
         try:
             with self._lock:
+                if self.pending_moment is not None:
+                    frame = ch.encode_moment(self.pending_moment) + frame
+                    self.pending_moment = None
                 ch.write_all(self._wfd, frame)
+                self.frames_sent += 1
         except OSError as exc:
             # The grader is gone: there is nobody left to run for.
             _fail(exc)
+
+    def send_pending_moment(self) -> None:
+        """Tell the grader the moment the node is at, if it has not been told (the node is ending there)."""
+        try:
+            with self._lock:
+                if self.pending_moment is not None:
+                    ch.write_all(self._wfd, ch.encode_moment(self.pending_moment))
+                    self.pending_moment = None
+        except OSError:
+            pass  # the grader is gone: nobody is left to tell
 
     def send_json(self, kind: int, obj: dict) -> None:
         self.send(ch.encode_json(kind, obj))
@@ -76,8 +105,9 @@ class Link:
         try:
             header, deliveries = ch.decode_batch(self._read(ch.BATCH))
             shutdown = header.get("shutdown")
+            moments = _moments(header.get("moments") or [], deliveries)
             return Batch(t_ns=_int(header, "t_ns"), clock_ns=_int(header, "clock_ns"), deliveries=deliveries,
-                         shutdown=None if shutdown is None else str(shutdown),
+                         moments=moments, shutdown=None if shutdown is None else str(shutdown),
                          connections=_counts(header.get("connections") or {}),
                          params=_changes(header.get("params") or []))
         except (ch.ChannelError, OSError) as exc:
@@ -108,6 +138,23 @@ def _counts(obj) -> dict[int, int]:
         return {int(ident): _int(obj, ident) for ident in obj}
     except ValueError:
         raise ch.ChannelError("BATCH connections must map topic handles to counts") from None
+
+
+def _moments(obj, deliveries: list[tuple[int, bytes]]) -> list[Moment]:
+    """The later moments of a BATCH header; their deliveries are taken off the end of ``deliveries``."""
+    if not isinstance(obj, list) or not all(isinstance(m, list) and len(m) == 3 for m in obj):
+        raise ch.ChannelError("BATCH moments must be a list of [t_ns, clock_ns, deliveries] triples")
+    counts = [_int({"deliveries": m[2]}, "deliveries") for m in obj]
+    if sum(counts) > len(deliveries):
+        raise ch.ChannelError("BATCH moments claim more deliveries than the batch carries")
+    start = len(deliveries) - sum(counts)
+    moments = []
+    for (t_ns, clock_ns, _), count in zip(obj, counts):
+        moments.append(Moment(_int({"t_ns": t_ns}, "t_ns"), _int({"clock_ns": clock_ns}, "clock_ns"),
+                              deliveries[start:start + count]))
+        start += count
+    del deliveries[len(deliveries) - sum(counts):]
+    return moments
 
 
 def _changes(obj) -> list[tuple[str, object]]:

@@ -22,7 +22,7 @@ from collections.abc import Callable
 import rosgrade_channel as ch
 import rosgrade_params
 
-from .link import Link
+from .link import Link, Moment
 
 # Code in these directories is library code: a CPU-time tick that lands in it never yields (see on_cpu_tick).
 # nodelib/ (common/ and every client library's root: rospy's and rclpy's frames are library frames too).
@@ -92,6 +92,12 @@ class Scheduler:
         # Threads started outside the token (from a thread the scheduler does not manage) wait here.
         self._outside = threading.Condition()
         self.adopted: list[_Waiter] = []  # student threads, in start order
+        # The later moments of the current batch not run yet, and what must not change for the node to run them:
+        # the frames it has sent and the wake-up it asked for.
+        self._later: deque[Moment] = deque()
+        self._moment = 1
+        self._frames_mark = 0
+        self._waited_for: int | None = None
 
     # -- queries ---------------------------------------------------------------------------------------------------
     def holds_token(self) -> bool:
@@ -269,25 +275,49 @@ class Scheduler:
         self._switch(None)
 
     def _exchange(self) -> None:
-        """Send WAIT with the earliest deadline, apply the grader's batch and queue the threads it wakes."""
+        """Send WAIT with the earliest deadline, apply the grader's batch and queue the threads it wakes.
+
+        A batch may carry later moments (times before the node's wake-up at which it only receives messages). The
+        node runs them on its own, each at its own time, as long as what it did stays invisible: no frame sent, the
+        same wake-up, no interrupt. Then the grader, which ran the world ahead speculatively, has nothing to undo.
+        At the first moment where that fails the node stops, tells the grader which moment it is at (MOMENT, in the
+        same write as its next frame) and skips the rest: the grader takes the world back to that moment."""
         deadlines = [w.deadline_ns for w in self._blocked if w.deadline_ns is not None]
-        self.link.send(ch.encode_wait(min(deadlines) if deadlines else None))
+        wake = min(deadlines) if deadlines else None
+        if self._later:
+            if self.link.frames_sent == self._frames_mark and wake == self._waited_for \
+                    and self.interrupt_pending is None:
+                moment = self._later.popleft()
+                self._moment += 1
+                self.link.pending_moment = self._moment
+                self._apply(moment.t_ns, moment.clock_ns, moment.deliveries, None)
+                return
+            self._later.clear()
+        self.link.send(ch.encode_wait(wake))
         batch = self.link.read_batch()
-        if batch.t_ns < self.world_ns:
-            raise SchedulerError(f"grader moved world time backwards: {batch.t_ns} < {self.world_ns}")
-        if batch.t_ns > self.world_ns:
-            self.charge_ns = 0
-        self.world_ns, self.clock_ns = batch.t_ns, batch.clock_ns
         self.connections.update(batch.connections)
         rosgrade_params.apply(self.param_tree, batch.params)
+        if batch.moments:
+            self._later.extend(batch.moments)
+            self._moment = self.link.pending_moment = 1
+            self._frames_mark, self._waited_for = self.link.frames_sent, wake
+        self._apply(batch.t_ns, batch.clock_ns, batch.deliveries, batch.shutdown)
+
+    def _apply(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None) -> None:
+        """Move to world time ``t_ns``, hand the deliveries to their topics and queue the threads they wake."""
+        if t_ns < self.world_ns:
+            raise SchedulerError(f"grader moved world time backwards: {t_ns} < {self.world_ns}")
+        if t_ns > self.world_ns:
+            self.charge_ns = 0
+        self.world_ns, self.clock_ns = t_ns, clock_ns
         woken: dict[_Waiter, None] = {}
-        for ident, data in batch.deliveries:
+        for ident, data in deliveries:
             sink = self._sinks.get(ident)
             consumer = sink(data) if sink is not None else None
             if consumer is not None:
                 woken[consumer] = None
-        if batch.shutdown is not None:
-            self.interrupt_pending = batch.shutdown
+        if shutdown is not None:
+            self.interrupt_pending = shutdown
         for w in woken:
             if w in self._blocked and self._is_ready(w):
                 del self._blocked[w]
