@@ -51,6 +51,20 @@ def test_malformed_frame_is_a_protocol_violation(tmp_path, attack, says):
     _world_ran_to_the_end(case)
 
 
+@pytest.mark.parametrize("attack, says", [
+    ("no_moment", "without saying first which moment"),
+    ("moment_out_of_range", "MOMENT 999 of a batch of"),
+    ("moment_twice", "a second one"),
+])
+def test_a_node_that_lies_about_its_moments_is_a_protocol_violation(tmp_path, attack, says):
+    """After a batch of moments the world has run ahead: a node that does not say where it stopped, or names a
+    moment the batch did not have, is stopped, and the world still runs to the end from a moment it had."""
+    case = run_case("lie_about_moments", tmp_path, args=(attack,))
+    assert case.node.status == "protocol_violation", case.node.message
+    assert says in case.node.message
+    _world_ran_to_the_end(case)
+
+
 # -- writes to a node never block the grader --------------------------------------------------------------------------
 def test_node_that_stops_reading_its_channel_is_stopped_by_its_watchdog(tmp_path):
     case = run_case("stop_reading", tmp_path)
