@@ -32,11 +32,11 @@ GROUND_TRUTH_HZ = 50  # above every odometry rate (30, 50 Hz); each sample is a 
 GROUND_TRUTH_TOPIC = "/ground_truth/odom"
 GROUND_TRUTH_FRAME = "world"
 TF_TOPIC = "/tf"
-# What a snapshot keeps of MuJoCo: time, qpos, qvel, act, warm start, controls and applied forces (mj_step reads
+# What a robot state keeps of MuJoCo: time, qpos, qvel, act, warm start, controls and applied forces (mj_step reads
 # nothing else; the derived quantities it leaves behind are recomputed by the next step before anything reads them).
 _INTEGRATION = mujoco.mjtState.mjSTATE_INTEGRATION
 NO_SCRIPT_NS = 2**63  # "the next scripted command" once there is none: later than any sim time
-START_STATES = 16  # worlds at their start kept per process (each holds an MjData copy, about 0.5 MB resident)
+START_STATES = 16  # worlds at their start kept per process (each a _RobotState: a few hundred bytes of MuJoCo state)
 
 Sensor = Imu | JointStates | Scanner
 # What is due on one step of the cycle: control, odometry, /tf, ground truth, and the sensors in publication order.
@@ -50,38 +50,16 @@ class SimError(Exception):
 
 
 @dataclass(frozen=True)
-class _StartState:
-    """A world one nanosecond before its start: the physics and every part that evolves while the robot waits.
+class _RobotState:
+    """Everything about the robot that evolves, at one time: MuJoCo's integration state (``mj_getState``: time, qpos,
+    qvel, act, warm start, controls, applied forces; all ``mj_step`` reads) and the world's own parts around it.
 
-    The latch, driver, odometry and IMU hold only immutable values (rebound, never changed in place), so a shallow
-    copy of each is independent of the world it came from.
+    The latch, driver and odometry hold only immutable values (rebound, never changed in place), so a shallow copy of
+    each is independent of the world it came from; a sensor with state (the IMU) is kept as its attributes and put
+    back into the world's own sensor, which the tick plan references.
     """
 
-    data: mujoco.MjData
-    latch: CommandLatch
-    driver: BaseDriver
-    odometry: WheelOdometry | WorldPoseOdometry
-    imu: Imu | None
-    k: int
-    time_ns: int
-    command: tuple[float, float]
-    wheel_targets: tuple[float, float]
-    estimate: Estimate
-
-
-_start_states: OrderedDict[str, _StartState] = OrderedDict()  # least recently used first
-
-
-@dataclass(frozen=True)
-class Snapshot:
-    """Everything a world's future depends on, at one time: ``World.restore`` makes the world continue from here
-    bit for bit as it did the first time (the session's rollback of a speculative advance).
-
-    As in ``_StartState``, the latch, driver and odometry are shallow copies (their values are rebound, never changed
-    in place); a sensor with state is referenced by the schedule, so its attributes are kept and put back in place.
-    """
-
-    physics: np.ndarray  # MuJoCo's integration state (mj_getState), all mj_step needs to go on exactly
+    physics: np.ndarray
     latch: CommandLatch
     driver: BaseDriver
     odometry: WheelOdometry | WorldPoseOdometry
@@ -91,10 +69,10 @@ class Snapshot:
     command: tuple[float, float]
     wheel_targets: tuple[float, float]
     estimate: Estimate
-    next_script: int
-    next_script_ns: int
-    pending: tuple[Sample, ...]
-    schedule: _Schedule
+
+
+# Worlds one nanosecond before their start, by everything that shapes them (_start_key); least recently used first.
+_start_states: OrderedDict[str, _RobotState] = OrderedDict()
 
 
 @dataclass(frozen=True)
@@ -105,6 +83,19 @@ class _Schedule:
     to_next_tick: list[int]  # for each step of the cycle, the steps to the next tick
     plan: list[Tick]  # what is due on each step of the cycle
     unheard: tuple[tuple[int, Sensor], ...]  # (period, sensor) of the unheard sensors that keep state
+
+
+@dataclass(frozen=True)
+class Snapshot:
+    """Everything a world's future depends on, at one time: ``World.restore`` makes the world continue from here
+    bit for bit as it did the first time (the session's rollback of a speculative advance). The robot's state, and
+    where the run is: the script's next command, samples not yet handed out, the heard sensors' tick plan."""
+
+    robot: _RobotState
+    next_script: int
+    next_script_ns: int
+    pending: tuple[Sample, ...]
+    schedule: _Schedule
 
 
 class World(ScenarioTimes):
@@ -135,22 +126,16 @@ class World(ScenarioTimes):
         start_key = _start_key(self.profile, self.mode_name, scenario)
         saved = _start_states.get(start_key)
         self._odometry: WheelOdometry | WorldPoseOdometry
-        if saved is None:
-            pose = scenario.initial_pose
-            self.data.qpos[:7] = (pose.x, pose.y, 0.0, math.cos(pose.yaw / 2), 0.0, 0.0, math.sin(pose.yaw / 2))
-            qpos, qvel = self._qpos.tolist(), self._qvel.tolist()
-            self._latch, self._driver = make_driver(self.mode, geometry)
-            self._odometry = (
-                WorldPoseOdometry()
-                if self.mode.odometry.source == "world"
-                else WheelOdometry(geometry.wheel_radius, geometry.wheel_separation, robot.wheel_qpos, 0, qpos)
-            )
-            imu = Imu(sensors.imu, self.model, 0, qvel) if sensors.imu is not None else None
-        else:
-            _start_states.move_to_end(start_key)
-            mujoco.mj_copyData(self.data, self.model, saved.data)
-            self._latch, self._driver = copy.copy(saved.latch), copy.copy(saved.driver)
-            self._odometry, imu = copy.copy(saved.odometry), copy.copy(saved.imu)
+        pose = scenario.initial_pose
+        self.data.qpos[:7] = (pose.x, pose.y, 0.0, math.cos(pose.yaw / 2), 0.0, 0.0, math.sin(pose.yaw / 2))
+        qpos, qvel = self._qpos.tolist(), self._qvel.tolist()
+        self._latch, self._driver = make_driver(self.mode, geometry)
+        self._odometry = (
+            WorldPoseOdometry()
+            if self.mode.odometry.source == "world"
+            else WheelOdometry(geometry.wheel_radius, geometry.wheel_separation, robot.wheel_qpos, 0, qpos)
+        )
+        imu = Imu(sensors.imu, self.model, 0, qvel) if sensors.imu is not None else None
         odometry, tf = self.mode.odometry, self.mode.tf
         self._odometry_names = (odometry.topic, odometry.frame_id, odometry.child_frame_id)
         self._tf_names = (TF_TOPIC, tf.parent, tf.child) if tf is not None else None
@@ -191,10 +176,10 @@ class World(ScenarioTimes):
             if start_ns > 0:
                 # The world has been running since 0, the robot waiting: nothing is scripted before the start.
                 self._run(start_ns - 1, [], emit=False)
-                _remember(start_key, self._start_state(imu))
+                _remember(start_key, self._robot_state())
         else:
-            self._k, self._time_ns, self._estimate = saved.k, saved.time_ns, saved.estimate
-            self._command, self._wheel_targets = saved.command, saved.wheel_targets
+            _start_states.move_to_end(start_key)
+            self._put_robot_state(saved)
         # Commands scripted for the start itself come out of the first advance_to.
         self._pending: list[Sample] = []
         self._run(start_ns, self._pending, emit=False)
@@ -316,33 +301,34 @@ class World(ScenarioTimes):
 
     def snapshot(self) -> Snapshot:
         """The world as it is now, to ``restore`` later (a few microseconds)."""
-        physics = np.empty(self._state_size)
-        mujoco.mj_getState(self.model, self.data, physics, _INTEGRATION)
-        return Snapshot(physics, copy.copy(self._latch), copy.copy(self._driver), copy.copy(self._odometry),
-                        tuple(dict(vars(sensor)) for _, sensor in self._sensors if sensor.keeps_state),
-                        self._k, self._time_ns, self._command, self._wheel_targets, self._estimate,
-                        self._next_script, self._next_script_ns, tuple(self._pending), self._schedule)
+        return Snapshot(self._robot_state(), self._next_script, self._next_script_ns, tuple(self._pending),
+                        self._schedule)
 
     def restore(self, snapshot: Snapshot) -> None:
         """Put the world back to ``snapshot`` (taken from this world): what follows is what followed it then."""
-        mujoco.mj_setState(self.model, self.data, snapshot.physics, _INTEGRATION)
-        self._latch, self._driver = copy.copy(snapshot.latch), copy.copy(snapshot.driver)
-        self._odometry = copy.copy(snapshot.odometry)
-        for sensor, state in zip((s for _, s in self._sensors if s.keeps_state), snapshot.sensor_states):
-            vars(sensor).update(state)
-        self._k, self._time_ns, self._command = snapshot.k, snapshot.time_ns, snapshot.command
-        self._wheel_targets, self._estimate = snapshot.wheel_targets, snapshot.estimate
+        self._put_robot_state(snapshot.robot)
         self._next_script, self._next_script_ns = snapshot.next_script, snapshot.next_script_ns
         self._pending, self._schedule = list(snapshot.pending), snapshot.schedule
 
-    # -- the loop ------------------------------------------------------------------------------------------------
+    def _robot_state(self) -> _RobotState:
+        physics = np.empty(self._state_size)
+        mujoco.mj_getState(self.model, self.data, physics, _INTEGRATION)
+        return _RobotState(physics, copy.copy(self._latch), copy.copy(self._driver), copy.copy(self._odometry),
+                           tuple(dict(vars(sensor)) for _, sensor in self._sensors if sensor.keeps_state),
+                           self._k, self._time_ns, self._command, self._wheel_targets, self._estimate)
 
-    def _start_state(self, imu: Imu | None) -> _StartState:
-        """A copy of this world as it is now (before its start), for the next world with the same start."""
-        data = mujoco.MjData(self.model)
-        mujoco.mj_copyData(data, self.model, self.data)
-        return _StartState(data, copy.copy(self._latch), copy.copy(self._driver), copy.copy(self._odometry),
-                           copy.copy(imu), self._k, self._time_ns, self._command, self._wheel_targets, self._estimate)
+    def _put_robot_state(self, state: _RobotState) -> None:
+        """Make the robot as it was in ``state``: taken from this world, or from another of the same start key (the
+        same robot, mode, obstacles and start; its sensors come in the same order)."""
+        mujoco.mj_setState(self.model, self.data, state.physics, _INTEGRATION)
+        self._latch, self._driver = copy.copy(state.latch), copy.copy(state.driver)
+        self._odometry = copy.copy(state.odometry)
+        for sensor, kept in zip((s for _, s in self._sensors if s.keeps_state), state.sensor_states):
+            vars(sensor).update(kept)
+        self._k, self._time_ns, self._command = state.k, state.time_ns, state.command
+        self._wheel_targets, self._estimate = state.wheel_targets, state.estimate
+
+    # -- the loop ------------------------------------------------------------------------------------------------
 
     def _schedule_for(self, sensors: list[tuple[int, Sensor]]) -> _Schedule:
         """The ticks with these sensors sampled (the others unheard), cached by which sensors they are."""
@@ -450,7 +436,7 @@ def _start_key(profile: RobotProfile, mode_name: str, scenario: Scenario) -> str
                  scenario.start_ns))
 
 
-def _remember(key: str, state: _StartState) -> None:
+def _remember(key: str, state: _RobotState) -> None:
     """Keep ``state`` for ``key``, forgetting the least recently used start beyond ``START_STATES``."""
     _start_states[key] = state
     while len(_start_states) > START_STATES:
