@@ -12,6 +12,7 @@ import signal
 import tempfile
 import time
 import dataclasses
+from collections.abc import Iterator
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import TextIO
@@ -450,8 +451,7 @@ class Session:
             timing.add("physics and sensors", stepped - started)
             encoded = [self._encode(sample) for sample in samples]
             deliveries = [(sub.ident, item.data) for item in encoded if item.to_nodes
-                          for sub in node.link.state.subscribers.values()
-                          if sub.topic == item.topic and sub.type == item.type and not sub.closed]
+                          for sub in _listening(node, item.topic, item.type)]
             ahead.chunks.append(_Chunk(target, encoded, deliveries, dict(self.seq)))
             if deliveries or target == last:
                 ahead.later.append((target, self._clock_ns(node.link, target), deliveries))
@@ -765,11 +765,10 @@ class Session:
         for node in self.nodes:
             if not node.alive:
                 continue
-            for sub in node.link.state.subscribers.values():
-                if sub.topic == topic and sub.type == type_name and not sub.closed:
-                    if queue:
-                        node.deliveries.append((sub.ident, data))
-                    sub.count += 1
+            for sub in _listening(node, topic, type_name):
+                if queue:
+                    node.deliveries.append((sub.ident, data))
+                sub.count += 1
 
     # -- metadata ----------------------------------------------------------------------------------------------
     def _world_metadata(self) -> dict[str, str]:
@@ -801,6 +800,12 @@ class Session:
             "diagnostics": json.dumps(result.diagnostics),
             "topics": json.dumps(result.topics),
         }
+
+
+def _listening(node: _Node, topic: str, type_name: str) -> Iterator[Endpoint]:
+    """The node's open subscribers to ``topic`` with ``type_name``: where a world message on it goes."""
+    return (sub for sub in node.link.state.subscribers.values()
+            if sub.topic == topic and sub.type == type_name and not sub.closed)
 
 
 def _tail(path: Path, limit: int = 600) -> str:
