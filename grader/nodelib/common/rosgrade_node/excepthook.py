@@ -4,6 +4,8 @@ from __future__ import annotations
 import os
 import sys
 import threading
+# Imported at start-up, not when first needed: CPython exits with 1 instead of by SIGINT when the excepthook of an
+# uncaught KeyboardInterrupt (or an atexit hook) imports a module, and a node's Ctrl+C exit must stay as on ROS.
 import traceback
 
 import rosgrade_channel as ch

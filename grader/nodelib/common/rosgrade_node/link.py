@@ -3,8 +3,6 @@ from __future__ import annotations
 
 import os
 import threading
-from dataclasses import dataclass, field
-from typing import NoReturn
 
 import rosgrade_channel as ch
 
@@ -12,28 +10,32 @@ import rosgrade_channel as ch
 _OUTPUT_CHUNK = 64 * 1024
 
 
-@dataclass
+# Plain slotted classes, not dataclasses: every node imports this module first thing, and dataclasses (with the
+# inspect and ast modules it needs) was about a fifth of the node library's import time.
 class Moment:
     """A later time of a batch: its clock and the messages delivered then."""
 
-    t_ns: int
-    clock_ns: int
-    deliveries: list[tuple[int, bytes]]
+    __slots__ = ("t_ns", "clock_ns", "deliveries")
+
+    def __init__(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]]) -> None:
+        self.t_ns, self.clock_ns, self.deliveries = t_ns, clock_ns, deliveries
 
 
-@dataclass
 class Batch:
     """What the grader sent in answer to a WAIT (one BATCH frame)."""
 
-    t_ns: int
-    clock_ns: int
-    deliveries: list[tuple[int, bytes]] = field(default_factory=list)
-    # Later times, in order, that the node runs on its own while what it does is invisible (see Scheduler).
-    moments: list[Moment] = field(default_factory=list)
-    shutdown: str | None = None
-    connections: dict[int, int] = field(default_factory=dict)  # changed connection counts per topic handle
-    # Parameter changes other nodes (or the world) made since the last batch, in order: [name, value (None: deleted)].
-    params: list[tuple[str, object]] = field(default_factory=list)
+    __slots__ = ("t_ns", "clock_ns", "deliveries", "moments", "shutdown", "connections", "params")
+
+    def __init__(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], moments: list[Moment],
+                 shutdown: str | None, connections: dict[int, int], params: list[tuple[str, object]]) -> None:
+        self.t_ns, self.clock_ns, self.deliveries = t_ns, clock_ns, deliveries
+        # Later times, in order, that the node runs on its own while what it does is invisible (see Scheduler).
+        self.moments = moments
+        self.shutdown = shutdown
+        self.connections = connections  # changed connection counts per topic handle
+        # Parameter changes other nodes (or the world) made since the last batch, in order: [name, value (None:
+        # deleted)].
+        self.params = params
 
 
 class Link:
@@ -123,7 +125,7 @@ class Link:
         return ch.decode_json(self._read(kind))
 
 
-def _fail(exc: BaseException) -> NoReturn:
+def _fail(exc: BaseException) -> NoReturn:  # a string annotation: typing is not imported for it
     """The grader closed the channel or broke the protocol: say why on the real stderr and end the process."""
     try:
         os.write(2, f"rosgrade node: channel error: {exc}\n".encode())

@@ -6,13 +6,17 @@ built once and cached, so a type is the same object whichever package or module 
 """
 from __future__ import annotations
 
-import hashlib
 import struct
 import sys
 import types
 from collections.abc import Callable
 
 from . import _msgdefs
+
+try:  # CPython's own MD5: importing hashlib loads OpenSSL, a few ms of every node's start
+    from _md5 import md5 as _md5
+except ImportError:  # an interpreter built without it
+    from hashlib import md5 as _md5
 from .message import DeserializationError, Message, SerializationError, _rosmsg_errors, numpy1_retry, struct_I
 from .rostime import Duration, Time
 
@@ -378,7 +382,7 @@ def _make_class(full_name: str, text: str, module: str) -> type:
     attrs = {
         "__slots__": [f.name for f in spec.fields], "__module__": module, "__qualname__": name,
         "__doc__": "Message class for %s (genpy semantics)." % full_name,
-        "_type": full_name, "_md5sum": hashlib.md5(_md5_text(spec).encode()).hexdigest(),
+        "_type": full_name, "_md5sum": _md5(_md5_text(spec).encode()).hexdigest(),
         "_full_text": _full_text(spec), "_slot_types": [f.type for f in spec.fields],
         "_has_header": bool(spec.fields) and spec.fields[0].type == "std_msgs/Header"
         and spec.fields[0].name == "header", "_spec": spec,
@@ -410,7 +414,7 @@ def service_class(full_name: str) -> type:
         request_text, _, response_text = _msgdefs.SERVICES[full_name].partition("---")
         request = _make_class(full_name + "Request", request_text, module)
         response = _make_class(full_name + "Response", response_text, module)
-        md5 = hashlib.md5((_md5_text(request._spec) + _md5_text(response._spec)).encode()).hexdigest()
+        md5 = _md5((_md5_text(request._spec) + _md5_text(response._spec)).encode()).hexdigest()
         cls = _services[full_name] = type(name, (object,), {
             "__module__": module, "__qualname__": name, "__doc__": "Service class for %s." % full_name,
             "_type": full_name, "_md5sum": md5, "_request_class": request, "_response_class": response})

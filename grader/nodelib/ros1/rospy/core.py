@@ -2,8 +2,7 @@
 from __future__ import annotations
 
 import collections.abc
-import hashlib
-import inspect
+import os
 import sys
 import traceback
 from collections.abc import Callable
@@ -141,8 +140,10 @@ def _emit(level: int, msg: object, args: tuple, frame) -> None:
 
 
 def _call_site(frame) -> tuple:
-    """Throttle/once key: the calling file, line and bytecode offset (so a helper function shares one key)."""
-    return (inspect.getabsfile(frame), frame.f_lineno, frame.f_lasti)
+    """Throttle/once key: the calling file, line and bytecode offset (so a helper function shares one key).
+
+    The file as inspect.getabsfile names it, without importing inspect (and ast, dis) into every node."""
+    return (os.path.normcase(os.path.abspath(frame.f_code.co_filename)), frame.f_lineno, frame.f_lasti)
 
 
 _once_seen: set[tuple] = set()
@@ -177,9 +178,9 @@ def _log(level: int, msg: object, args: tuple, kwargs: dict, *, throttle: float 
     elif identical:
         key = _call_site(frame)
         elapsed = _throttle_elapsed(key, throttle) if throttle is not None else False
-        digest = hashlib.md5(str(msg).encode()).hexdigest()
-        changed = _identical_last.get(key) != digest
-        _identical_last[key] = digest
+        text = str(msg)  # rospy compares the texts' MD5 digests: comparing the texts is the same test
+        changed = _identical_last.get(key) != text
+        _identical_last[key] = text
         if not (changed or elapsed):
             return
     elif throttle:
