@@ -49,7 +49,7 @@ NS_INIT = str(Path(__file__).resolve().with_name("ns_init.py"))
 NODELIB = str(Path(__file__).resolve().parents[1] / "nodelib")
 PR_SET_PDEATHSIG, PR_SET_DUMPABLE, PR_SET_CHILD_SUBREAPER = 1, 4, 36
 
-# Runs inside bwrap as root: setgid/setuid to the node's uid and exec the node.
+# Runs inside bwrap as root when util-linux's setpriv is missing: setgid/setuid to the node's uid and exec the node.
 # It runs with -I -S (no site, no environment-driven imports), so nothing of the student's can run before the drop.
 _WRAPPER = (
     "import os,sys\n"
@@ -406,7 +406,7 @@ def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int) -
             # Nothing but its /tmp and /dev/shm is writable (unprivileged, the sandbox's root is a tmpfs of its own).
             args += ["--remount-ro", "/", "--chdir", SANDBOX_HOME, "--"]
             if uid is not None:
-                args += [sys.executable, "-I", "-S", "-c", _WRAPPER, str(uid)]
+                args += _drop_argv(uid)
             argv = args + [sys.executable, *command]
         else:
             pairs = [(str(staged or shown[0]), str(shown[0]))] if shown else []
@@ -446,6 +446,16 @@ def remove_files_of(uid: int, folders: tuple[str, ...] = ("/dev/shm", "/tmp", "/
                     os.unlink(entry.path)
             except OSError:
                 pass
+
+
+def _drop_argv(uid: int) -> list[str]:
+    """What becomes the node's uid inside bwrap as root, then execs the node: setpriv (2 ms) where util-linux has
+    it under /usr, which the sandbox shows, else a Python stub (16 ms of every node's start)."""
+    setpriv = shutil.which("setpriv", path="/usr/bin:/usr/sbin")
+    if setpriv is not None:
+        # Real, effective and saved ids all become uid (setreuid as root), so the capabilities go with root's.
+        return [setpriv, f"--reuid={uid}", f"--regid={uid}", "--clear-groups", "--"]
+    return [sys.executable, "-I", "-S", "-c", _WRAPPER, str(uid)]
 
 
 def drop_privileges(uid: int) -> None:
