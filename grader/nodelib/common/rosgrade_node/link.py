@@ -146,13 +146,13 @@ def _moments(obj, deliveries: list[tuple[int, bytes]]) -> list[Moment]:
     """The later moments of a BATCH header; their deliveries are taken off the end of ``deliveries``."""
     if not isinstance(obj, list) or not all(isinstance(m, list) and len(m) == 3 for m in obj):
         raise ch.ChannelError("BATCH moments must be a list of [t_ns, clock_ns, deliveries] triples")
-    counts = [_int({"deliveries": m[2]}, "deliveries") for m in obj]
+    counts = [_count(m[2], "deliveries") for m in obj]
     if sum(counts) > len(deliveries):
         raise ch.ChannelError("BATCH moments claim more deliveries than the batch carries")
     start = len(deliveries) - sum(counts)
     moments = []
     for (t_ns, clock_ns, _), count in zip(obj, counts):
-        moments.append(Moment(_int({"t_ns": t_ns}, "t_ns"), _int({"clock_ns": clock_ns}, "clock_ns"),
+        moments.append(Moment(_count(t_ns, "t_ns"), _count(clock_ns, "clock_ns"),
                               deliveries[start:start + count]))
         start += count
     del deliveries[len(deliveries) - sum(counts):]
@@ -167,7 +167,11 @@ def _changes(obj) -> list[tuple[str, object]]:
 
 
 def _int(obj: dict, key: str) -> int:
-    value = obj.get(key)
-    if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+    return _count(obj.get(key), key)
+
+
+def _count(value: object, key: str) -> int:
+    """``value`` when it is a non-negative integer (the field ``key`` of a header); a channel error otherwise."""
+    if type(value) is not int or value < 0:  # type(): bool is an int to isinstance
         raise ch.ChannelError(f"field {key!r} must be a non-negative integer, got {value!r}")
     return value
