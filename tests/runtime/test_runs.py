@@ -172,3 +172,10 @@ def test_the_node_runs_on_its_runs_cpu_but_sees_four(tmp_path):
     kernel = next(line.split("kernel ")[1] for line in log.splitlines() if "kernel " in line)
     if len(os.sched_getaffinity(0)) >= 2:
         assert kernel.isdigit(), f"the node may use CPUs {kernel}, not the one its run claimed"
+
+
+def test_the_node_is_a_batch_task_whose_wake_ups_do_not_preempt_the_grader(tmp_path):
+    run_node(tmp_path, NODES / "cpu_view.py", Scenario(duration=1.0))
+    policy = next(line.split("policy ")[1] for line in (tmp_path / "run.log").read_text().splitlines()
+                  if "policy " in line)
+    assert policy == str(os.SCHED_BATCH)
