@@ -169,3 +169,11 @@ def test_every_client_library_s_frames_count_as_library_code():
         assert str(root / "x.py").startswith(scheduler._LIBRARY_DIRS)
     assert rospy.__file__.startswith(scheduler._LIBRARY_DIRS)
     assert not str(NODELIB.parents[1] / "reference_solutions" / "move_circle.py").startswith(scheduler._LIBRARY_DIRS)
+
+
+def test_a_log_call_site_is_keyed_by_the_file_inspect_names():
+    """The throttle/once key is built without importing inspect, but names the file as inspect.getabsfile does."""
+    import inspect
+
+    frame = sys._getframe()
+    assert core._call_site(frame)[0] == inspect.getabsfile(frame)
