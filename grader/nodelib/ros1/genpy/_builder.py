@@ -12,13 +12,13 @@ import types
 from collections.abc import Callable
 
 from . import _msgdefs
+from .message import DeserializationError, Message, SerializationError, _rosmsg_errors, numpy1_retry, struct_I
+from .rostime import Duration, Time
 
 try:  # CPython's own MD5: importing hashlib loads OpenSSL, a few ms of every node's start
     from _md5 import md5 as _md5
 except ImportError:  # an interpreter built without it
     from hashlib import md5 as _md5
-from .message import DeserializationError, Message, SerializationError, _rosmsg_errors, numpy1_retry, struct_I
-from .rostime import Duration, Time
 
 _CODES = {"int8": "b", "uint8": "B", "byte": "b", "char": "B", "bool": "B", "int16": "h", "uint16": "H",
           "int32": "i", "uint32": "I", "int64": "q", "uint64": "Q", "float32": "f", "float64": "d"}
