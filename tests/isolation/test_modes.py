@@ -95,16 +95,17 @@ def test_mount_points_with_spaces_are_read_back():
 @pytest.mark.parametrize("with_setpriv", [True, False], ids=["setpriv", "python-stub"])
 def test_root_bwrap_drops_every_id_and_capability_before_the_node(with_setpriv, monkeypatch, tmp_path):
     """setpriv (or, where util-linux lacks it, the Python stub) leaves the node no root id, group or capability."""
+    setpriv = confine.shutil.which("setpriv", path="/usr/bin:/usr/sbin")
     if not with_setpriv:
         monkeypatch.setattr(confine.shutil, "which", lambda name, path=None: None)
-    elif confine.shutil.which("setpriv", path="/usr/bin:/usr/sbin") is None:
+    elif setpriv is None:
         pytest.skip("util-linux's setpriv is not installed")
     script = tmp_path / "node.py"
     script.write_text("")
     probe = "print(''.join(l for l in open('/proc/self/status') if l.split(':')[0] in {keys!r}))".format(
         keys={"Uid", "Gid", "Groups", "CapPrm", "CapEff", "CapAmb"})
     plan = confine.plan(["-c", probe], script, tmp_path, 16)
-    assert ("/usr/bin/setpriv" in plan.argv) == with_setpriv
+    assert (setpriv is not None and setpriv in plan.argv) == with_setpriv
     ran = subprocess.run(plan.argv, cwd=plan.cwd, capture_output=True, text=True, timeout=60)
     status = dict(line.split(":\t") for line in ran.stdout.splitlines() if line)
     assert status["Uid"].split() == [str(plan.uid)] * 4 and status["Gid"].split() == [str(plan.uid)] * 4

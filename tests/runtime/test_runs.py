@@ -165,17 +165,24 @@ def test_run_metadata_records_exit_and_shutdown(tmp_path):
     assert np.all(commands.t[:-1] < scenario.start_time + 5.0)
 
 
-def test_the_node_runs_on_its_runs_cpu_but_sees_four(tmp_path):
-    result, _ = run_node(tmp_path, NODES / "cpu_view.py", Scenario(duration=1.0))
-    log = (tmp_path / "run.log").read_text()
-    assert "sees 4 4 [0, 1, 2, 3]" in log
-    kernel = next(line.split("kernel ")[1] for line in log.splitlines() if "kernel " in line)
+@pytest.fixture(scope="module")
+def cpu_view_log(tmp_path_factory) -> str:
+    """The log of one run of a node that prints the CPUs and scheduling policy it sees and the kernel gives it."""
+    tmp = tmp_path_factory.mktemp("cpu_view")
+    run_node(tmp, NODES / "cpu_view.py", Scenario(duration=1.0))
+    return (tmp / "run.log").read_text()
+
+
+def _printed(log: str, label: str) -> str:
+    return next(line.split(f"{label} ")[1] for line in log.splitlines() if f"{label} " in line)
+
+
+def test_the_node_runs_on_its_runs_cpu_but_sees_four(cpu_view_log):
+    assert "sees 4 4 [0, 1, 2, 3]" in cpu_view_log
+    kernel = _printed(cpu_view_log, "kernel")
     if len(os.sched_getaffinity(0)) >= 2:
         assert kernel.isdigit(), f"the node may use CPUs {kernel}, not the one its run claimed"
 
 
-def test_the_node_is_a_batch_task_whose_wake_ups_do_not_preempt_the_grader(tmp_path):
-    run_node(tmp_path, NODES / "cpu_view.py", Scenario(duration=1.0))
-    policy = next(line.split("policy ")[1] for line in (tmp_path / "run.log").read_text().splitlines()
-                  if "policy " in line)
-    assert policy == str(os.SCHED_BATCH)
+def test_the_node_is_a_batch_task_whose_wake_ups_do_not_preempt_the_grader(cpu_view_log):
+    assert _printed(cpu_view_log, "policy") == str(os.SCHED_BATCH)
