@@ -35,6 +35,16 @@ class CommandLatch:
         self._command = (linear if math.isfinite(linear) else 0.0, angular if math.isfinite(angular) else 0.0)
         self._received_ns = t_ns
 
+    def renew(self, t_ns: int) -> None:
+        """The command in force was received again at ``t_ns``, unchanged: only its timeout starts again."""
+        self._received_ns = t_ns
+
+    def holds_until_ns(self) -> int | None:
+        """The last time the command in force holds without another (None: it never times out)."""
+        if self._timeout_ns is None or self._received_ns is None:
+            return None
+        return self._received_ns + self._timeout_ns
+
     def command_at(self, t_ns: int) -> tuple[float, float]:
         """The (v, ω) in force at ``t_ns``: the upstream drivers all zero it once ``now - received > timeout``."""
         if self._received_ns is None:

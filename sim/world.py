@@ -239,6 +239,20 @@ class World(ScenarioTimes):
         self._latch.receive(self._time_ns, float(linear[0]), float(angular[2]))
         return True
 
+    def repeat_command(self, t_ns: int) -> None:
+        """The command in force was received again at ``t_ns`` (no later than now), the same values: what a run ahead
+        of a node that repeats its command leaves to do, since only the base's timeout notices a repeat."""
+        self._latch.renew(t_ns)
+
+    def command_holds_until_ns(self) -> int | None:
+        """The last time the command in force holds if no other comes: None when the base has no timeout."""
+        return self._latch.holds_until_ns()
+
+    @property
+    def next_scripted_command_ns(self) -> int | None:
+        """When the scenario's next scripted command is due (None: there is none left)."""
+        return self._script[self._next_script][0] if self._next_script < len(self._script) else None
+
     def listen(self, topics: Collection[str] | None) -> None:
         """Publish the sensor topics among ``topics`` only (None, the default: every sensor), from the next step on.
 

@@ -45,6 +45,7 @@ class Endpoint:
     closed: bool = False
     dropped_before_connect: int = 0
     latched: Latched | None = None  # a latched publisher's last message
+    last_data: bytes | None = None  # a publisher's last message (the node keeps it too: see inert batches)
 
 
 @dataclass
@@ -210,36 +211,40 @@ class NodeLink:
         self._send(ch.encode_json(ch.START, start))
         return hello.model_dump()
 
-    def run_until_wait(self, t_ns: int, sink: Callable[[object], ServiceReply | None], moments: int = 1,
-                       at_moment: Callable[[int], int] | None = None) -> int | None:
+    def run_until_wait(self, t_ns: int, sink: Callable[[object], ServiceReply | None],
+                       inert: dict[int, bool] | None = None, at_moment: Callable[[int], int] | None = None,
+                       on_act: Callable[[], None] | None = None) -> int | None:
         """Read frames until the node yields, passing each event at t_ns to sink; returns wake_ns or None.
 
         A ServiceCall is answered at once with the ServiceReply the sink returns for it (the node waits for it).
-        After a BATCH of several ``moments`` the node's first frame says which moment it stopped at: ``at_moment``
-        gets that number and returns the moment's time, at which everything that follows happens."""
+        After a BATCH of moments (``inert``: its inert publishers, see rosgrade_channel.encode_batch) the node names
+        each moment it sends something at (MOMENT) before that: ``at_moment`` gets its time and returns it, and what
+        follows happens then. Its first frame that is not inert goes to ``on_act`` before it is handled, and ends
+        the batch of moments there."""
         self._deadline = time.monotonic() + self._silent_wall_s
+        told = acted = False
         while True:
             kind, payload = self._read()
-            if moments > 1:
-                if kind != ch.MOMENT:
-                    raise ProtocolViolation(f"sent {ch.KIND_NAMES.get(kind, kind)} after a batch of {moments} "
-                                            "moments without saying first which moment it was at (MOMENT)")
+            if kind == ch.MOMENT:
+                if inert is None or acted:
+                    raise ProtocolViolation("MOMENT outside a batch of moments, or after the node acted in it")
                 try:
-                    index = ch.split_moment(payload)
+                    t_ns, told = at_moment(ch.split_moment(payload)), True
                 except ch.ChannelError as exc:
                     raise ProtocolViolation(str(exc)) from None
-                if not 1 <= index <= moments:
-                    raise ProtocolViolation(f"MOMENT {index} of a batch of {moments} moments")
-                t_ns, moments = at_moment(index), 1
                 continue
-            if kind == ch.MOMENT:
-                raise ProtocolViolation("MOMENT outside a batch of several moments, or a second one")
+            if inert is not None and not told:
+                raise ProtocolViolation(f"sent {ch.KIND_NAMES.get(kind, kind)} after a batch of moments without "
+                                        "saying first which moment it was at (MOMENT)")
             if kind == ch.WAIT:
                 plain, wake = ch.plain_wait(payload)
                 if not plain:
                     wake = self._parse(kind, payload).wake_ns
                 # A wake-up in the past would let a node stall the world forever: it costs at least one quantum.
                 return max(wake, t_ns + ch.CALL_QUANTUM_NS) if wake is not None else None
+            if inert is not None and not acted and not self._inert(kind, payload, inert):
+                acted = True
+                on_act()
             try:
                 event = self._handle(kind, payload, t_ns)
             except ch.ChannelError as exc:
@@ -249,6 +254,17 @@ class NodeLink:
                     answer = sink(item)
                     if isinstance(item, ServiceCall):
                         self._reply(answer)
+
+    def _inert(self, kind: int, payload: bytes, inert: dict[int, bool]) -> bool:
+        """Whether a frame leaves the world and the node's batches as they are (the node library's own rule)."""
+        if kind in (ch.LOG, ch.OUTPUT):
+            return True
+        if kind != ch.PUBLISH or len(payload) < 4:
+            return False
+        ident, data = ch.split_id_bytes(payload)
+        grant = inert.get(ident)
+        endpoint = self.state.publishers.get(ident)
+        return grant is True or (grant is False and endpoint is not None and endpoint.last_data == data)
 
     @staticmethod
     def _parse(kind: int, payload: bytes):
@@ -265,11 +281,14 @@ class NodeLink:
             endpoint = st.publishers.get(ident)
             if endpoint is None or endpoint.closed:
                 raise ProtocolViolation(f"PUBLISH on unknown or closed publisher handle {ident}")
-            try:
-                self._catalog.decode(endpoint.type, data)
-            except RecordingError as exc:
-                raise ProtocolViolation(f"message on {endpoint.topic} is not a valid {endpoint.type}: {exc}") from None
+            if data != endpoint.last_data:  # a repeated message was checked the first time
+                try:
+                    self._catalog.decode(endpoint.type, data)
+                except RecordingError as exc:
+                    raise ProtocolViolation(f"message on {endpoint.topic} is not a valid {endpoint.type}: {exc}") \
+                        from None
             endpoint.count += 1
+            endpoint.last_data = data
             return Publication(endpoint, data)
         if kind == ch.OUTPUT:
             stream, text = ch.split_output(payload)
@@ -412,13 +431,17 @@ class NodeLink:
 
     def resume(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None,
                connections: dict[int, int] | None = None, params: list[tuple[str, object]] | None = None,
-               later: list[tuple[int, int, list[tuple[int, bytes]]]] = ()) -> None:
+               later: list[tuple[int, int, list[tuple[int, bytes]]]] = (), until_ns: int | None = None,
+               inert: dict[int, bool] | None = None) -> None:
         """Send one BATCH frame: the new time (with changed connection counts per topic handle, and the parameter
         changes others made, in order), messages for the node's subscribers and maybe Ctrl+C; the node runs until
-        its next WAIT. ``later``: (t_ns, clock_ns, deliveries) of later moments it may run on its own."""
+        its next WAIT. ``later``: (t_ns, clock_ns, deliveries) of later moments it may run on its own, with its own
+        wake-ups, up to ``until_ns``; ``inert``: its publishers that do not end that (see encode_batch)."""
         header: dict = {"t_ns": t_ns, "clock_ns": clock_ns}
-        if later:
+        if until_ns is not None:
             header["moments"] = [[t, clock, len(items)] for t, clock, items in later]
+            header["until"] = until_ns
+            header["inert"] = {str(ident): "any" if grant else "same" for ident, grant in (inert or {}).items()}
             deliveries = deliveries + [item for _, _, items in later for item in items]
         if connections:
             header["connections"] = {str(ident): count for ident, count in connections.items()}

@@ -59,6 +59,12 @@ USAGE_PERIOD_S = 1.0
 # The most later moments one BATCH carries (0: none, the plain lockstep). A node that stops early gets fewer next
 # time: the world run ahead past the moment it stopped at is taken back, and so wasted.
 MAX_MOMENTS = 64
+# How far past its wake-up the world runs ahead of a node, at most and at first: the node runs on its own there
+# while it only repeats its command (or logs, prints); a node that acts there costs the world run past that point.
+MAX_FREE_NS = 250_000_000
+FIRST_FREE_NS = 50_000_000
+# How far the world runs ahead of a node that waits only for messages.
+MAX_AHEAD_NS = 2_000_000_000
 
 
 class RunError(Exception):
@@ -93,6 +99,9 @@ class _Node:
     moments_cap: int = 1
     misses: int = 0
     pause: int = 0
+    # How far past its wake-up the world runs ahead (0: to the wake-up only, until the node wakes and only
+    # repeats what it did, since it acted at its wake-up itself last time).
+    free_ns: int = FIRST_FREE_NS
 
     @property
     def callerid(self) -> str:
@@ -111,30 +120,28 @@ class _Encoded:
     callerid: str
     origin: str
     to_nodes: bool
-
-
-@dataclass
-class _Chunk:
-    """One advance of the world run ahead: its target time, what it published, the deliveries to the node, and the
-    message sequence numbers after it."""
-
-    target: int
-    encoded: list[_Encoded]
-    deliveries: list[tuple[int, bytes]]
-    seq_after: dict[str, int]
+    seq: int = -1  # the topic's sequence number it took (-1: a scripted command, which takes none)
 
 
 @dataclass
 class _Speculation:
-    """A world run ahead of a node from the batch's time ``t_ns``, not recorded until the node says how far it got."""
+    """A world run ahead of a node from the batch's time ``t_ns`` to ``until_ns``, recorded as the node says how far
+    it got (MOMENT), and taken back to where it stopped if that was earlier."""
 
     node: _Node
     t_ns: int
-    snapshot: object
-    seq_before: dict[str, int]
-    chunks: list[_Chunk] = field(default_factory=list)
+    wake_ns: int | None  # the node's wake-up when the batch went out
+    inert: dict[int, bool]  # the batch's inert publishers (see rosgrade_channel.encode_batch)
+    # The world before each advance, by time: taking it back re-runs at most one advance.
+    snapshots: list[tuple[int, object]] = field(default_factory=list)
+    items: list[_Encoded] = field(default_factory=list)  # what the world published on the way, in time order
     later: list[tuple[int, int, list[tuple[int, bytes]]]] = field(default_factory=list)  # (t, clock, deliveries)
-    moment_chunks: list[int] = field(default_factory=list)  # per later moment, the chunks up to and including its own
+    until_ns: int = 0
+    now_ns: int = 0  # the moment the node is at
+    told: bool = False  # the node has named a moment
+    committed: int = 0  # items recorded so far
+    renewed_ns: int | None = None  # when the node last repeated the robot's command
+    acted: bool = False  # the node did something that ended its run on its own (see on_act)
     settled: bool = False
 
 
@@ -167,6 +174,10 @@ class Session:
         self.params: ParamServer | None = None  # the run's parameter server, from the start of the recording
         self._next_usage_check = 0.0
         self._listened: set[str] | None = None  # the topics the world was last told nodes subscribe to
+        # The (type, bytes) of the last command a node's publication gave the robot (None: none, or a scripted one
+        # came after it): repeating it changes nothing but the base's timeout.
+        self._robot_command: tuple[str, bytes] | None = None
+        self._ahead: _Speculation | None = None  # the world run ahead of the node now running, until settled
 
     # -- public ------------------------------------------------------------------------------------------------
     def run(self) -> RunResult:
@@ -382,30 +393,31 @@ class Session:
 
     def _run_node(self, node: _Node, link: NodeLink, t: int, shutdown: str | None, first: bool) -> None:
         ahead: _Speculation | None = None
-        now = t  # the time of what the node does: a later moment's, once it says it stopped there
-
-        def at_moment(index: int) -> int:
-            nonlocal now
-            now = self._settle(ahead, index)
-            return now
-
         try:
             if not first:
                 clock = self._clock_ns(link, t)
                 deliveries, node.deliveries = node.deliveries, []
                 changes = self._connection_changes(node, t)
                 params = self.params.take(self.nodes.index(node))
-                if shutdown is None and deliveries:
+                if shutdown is None:
                     ahead = self._speculate(node, t)
                 link.resume(t, clock, deliveries, shutdown, changes, params,
-                            later=ahead.later if ahead is not None else ())
-            node.wake_ns = link.run_until_wait(t, lambda event: self._node_event(node, event, now),
-                                               len(ahead.later) + 1 if ahead is not None else 1, at_moment)
+                            later=ahead.later if ahead is not None else (),
+                            until_ns=ahead.until_ns if ahead is not None else None,
+                            inert=ahead.inert if ahead is not None else None)
+            self._ahead = ahead
+            node.wake_ns = link.run_until_wait(
+                t, lambda event: self._node_event(node, event, ahead.now_ns if ahead is not None else t),
+                ahead.inert if ahead is not None else None,
+                lambda moment: self._moment(ahead, moment), lambda: self._settle(ahead, exact=True))
+            if ahead is not None and not ahead.settled:
+                self._settle(ahead, exact=False)
         except (NodeExited, NodeSilent, ProtocolViolation, OutputLimitExceeded, EndpointLimitExceeded) as exc:
             if ahead is not None and not ahead.settled:
-                # it ended (or broke the channel) before saying which moment it was at: the batch's own time
-                now = self._settle(ahead, 1)
-            self._node_failed(node, exc, now)
+                self._settle(ahead, exact=True)  # where it ended (or broke the channel): the last moment it named
+            self._node_failed(node, exc, ahead.now_ns if ahead is not None else t)
+        finally:
+            self._ahead = None
 
     @staticmethod
     def _clock_ns(link: NodeLink, t: int) -> int:
@@ -414,88 +426,150 @@ class Session:
 
     # -- running the world ahead of a node (batches of moments) ------------------------------------------------
     def _speculate(self, node: _Node, t: int) -> _Speculation | None:
-        """Run the world ahead of a node that is only receiving messages at t, up to its wake-up, for one BATCH of
-        moments; None when the lockstep must go step by step (several nodes, a shutdown, a world without rollback).
+        """Run the world ahead of a node at t for one BATCH of moments; None when the lockstep must go step by step
+        (several nodes, a shutdown, a world without rollback, a node that acted at once lately).
 
-        The later moments are the times the lockstep would stop at for this node, with the same deliveries: until
-        the node's wake-up (itself the last moment) or anything else that would change its batches (a publisher
-        connecting, the shutdown, the end). What the world publishes meanwhile is encoded but not yet recorded."""
+        The later moments are the times the lockstep would stop at to deliver to the node, up to a horizon: a while
+        past its wake-up (``free_ns``, which the node's record sets), before anything else that would change its
+        batches (a publisher connecting, the shutdown, the end) and, if the node may repeat the robot's command,
+        before that command would time out or a scripted one replace it. What the world publishes on the way is
+        encoded but not yet recorded."""
         snapshot = getattr(self.world, "snapshot", None)
-        if not MAX_MOMENTS or snapshot is None or node.term_ns is not None or sum(n.alive for n in self.nodes) != 1:
+        if not MAX_MOMENTS or snapshot is None or node.term_ns is not None or sum(n.alive for n in self.nodes) != 1 \
+                or node.link.state.init_ns is None:
             return None
         if node.pause:
             node.pause -= 1
             return None
-        wake = node.wake_ns
-        if wake is not None and wake <= t:
-            return None
+        wake = None if node.wake_ns is None else max(node.wake_ns, t)  # t: it wakes now, by its own deadline
+        inert = self._inert_publishers(node, t)
         bounds = [self.end_ns, *self._latched_connect_times(t)]
         if self.shutdown_ns is not None and not self.shutdown_sent:
             bounds.append(self.shutdown_ns)
         bounds += [ready for pub in node.link.state.publishers.values()
                    if not pub.closed and (ready := self._ready_ns(pub)) > t]
-        bound = min(bounds)
-        last = wake if wake is not None and wake < bound else None  # the wake-up, when it comes first
-        ahead = _Speculation(node, t, snapshot(), dict(self.seq))
+        if False in inert.values():  # a repeated command must find the base as it left it
+            holds = self.world.command_holds_until_ns()
+            scripted = self.world.next_scripted_command_ns
+            bounds += [b for b in (None if holds is None else holds + 1, scripted) if b is not None]
+        limit = min(min(bounds) - 1, t + MAX_AHEAD_NS if wake is None else wake + node.free_ns)
+        due = self.world.next_output_ns(self._listened)
+        if (wake is None or wake > limit) and (due is None or due > limit):
+            return None  # nothing for the node before the horizon: running ahead could only be taken back
+        ahead = _Speculation(node, t, wake, inert, now_ns=t)
         started = time.perf_counter()
         while len(ahead.later) < node.moments_cap:
             due = self.world.next_output_ns(self._listened)
-            if due is not None and due < (bound if last is None else last):
-                target = due
-            elif last is not None:
-                target = last
-            else:
+            target = due if due is not None and due <= limit else limit
+            if target <= self.world.time_ns:
                 break
+            ahead.snapshots.append((self.world.time_ns, snapshot()))
             samples = self.world.advance_to(target)
             stepped = time.perf_counter()
             timing.add("physics and sensors", stepped - started)
             encoded = [self._encode(sample) for sample in samples]
+            ahead.items += encoded
             deliveries = [(sub.ident, item.data) for item in encoded if item.to_nodes
                           for sub in _listening(node, item.topic, item.type)]
-            ahead.chunks.append(_Chunk(target, encoded, deliveries, dict(self.seq)))
-            if deliveries or target == last:
+            if deliveries:
                 ahead.later.append((target, self._clock_ns(node.link, target), deliveries))
-                ahead.moment_chunks.append(len(ahead.chunks))
             started = time.perf_counter()
             timing.add("world messages (encode, record, queue)", started - stepped)
-            if target == last:
-                break
-        if not ahead.later:  # only messages nobody hears before the bound: nothing to batch
-            self._take_back(ahead, 0)
+        ahead.until_ns = self.world.time_ns
+        if ahead.until_ns == t or (not ahead.later and (wake is None or wake > ahead.until_ns)):
+            self._take_back(ahead, t)  # nothing the node would do on its own
             return None
         return ahead
 
-    def _settle(self, ahead: _Speculation, index: int) -> int:
-        """The node stopped at moment ``index`` of the batch: record what the world did up to that moment and take
-        the world back there if it ran further; returns the moment's time."""
-        kept = ahead.moment_chunks[index - 2] if index > 1 else 0
-        for chunk in ahead.chunks[:kept]:
-            for item in chunk.encoded:
-                self._commit(item, queue=False)
-        self._take_back(ahead, kept)
+    def _inert_publishers(self, node: _Node, t: int) -> dict[int, bool]:
+        """The node's publishers whose messages cannot change the world or its batches while nothing else changes:
+        True for any message (recorded only), False when only its last message again is (the robot's command in
+        force, repeated). Latched publishers never are: a latched message is kept for later subscribers."""
+        inert: dict[int, bool] = {}
+        for pub in node.link.state.publishers.values():
+            if pub.closed or pub.latch:
+                continue
+            world_only = pub.topic in self.publications and not self.publications[pub.topic].shared
+            if world_only or pub.topic == "/clock" or pub.topic.startswith("/rosgrade/") or t < self._ready_ns(pub):
+                inert[pub.ident] = True  # ignored, or lost before its publisher connects
+                continue
+            receivers = self._receivers(pub, t)
+            if not receivers:
+                inert[pub.ident] = True
+            elif receivers == [ROBOT] and pub.last_data is not None and self._robot_command == (pub.type, pub.last_data):
+                holds = self.world.command_holds_until_ns()
+                if holds is None or holds > t:
+                    inert[pub.ident] = False
+        return inert
+
+    def _moment(self, ahead: _Speculation, t_ns: int) -> int:
+        """The node says it is at ``t_ns`` (MOMENT): record what the world did up to then; returns the time."""
+        if not ahead.t_ns <= t_ns <= ahead.until_ns:
+            raise ProtocolViolation(f"MOMENT at {t_ns} ns, outside its batch ({ahead.t_ns}..{ahead.until_ns} ns)")
+        if t_ns < ahead.now_ns or (ahead.told and t_ns == ahead.now_ns):
+            raise ProtocolViolation(f"MOMENT at {t_ns} ns, not after the moment before it ({ahead.now_ns} ns)")
+        ahead.now_ns, ahead.told = t_ns, True
+        self._commit_ahead(ahead, t_ns)
+        return t_ns
+
+    def _commit_ahead(self, ahead: _Speculation, t_ns: int) -> None:
+        """Record the world's messages run ahead up to ``t_ns`` (already delivered, if they were for the node)."""
+        items, n = ahead.items, ahead.committed
+        while n < len(items) and items[n].t_ns <= t_ns:
+            self._commit(items[n], queue=False)
+            n += 1
+        ahead.committed = n
+
+    def _settle(self, ahead: _Speculation, exact: bool) -> None:
+        """The node stopped at ``ahead.now_ns``: acted there (or ended), or sent WAIT. Record the world up to that
+        moment and take it back there; after a WAIT with every later moment run and a wake-up past the horizon the
+        world may stay where it ran ahead to, since the lockstep would have gone there with nothing to stop for."""
+        node, t = ahead.node, ahead.now_ns
+        ahead.acted = ahead.acted or exact
+        self._commit_ahead(ahead, t)
+        passed = sum(1 for when, _, _ in ahead.later if when <= t)
+        if not exact and passed == len(ahead.later) and (node.wake_ns is None or node.wake_ns > ahead.until_ns):
+            self._commit_ahead(ahead, ahead.until_ns)
+        else:
+            self._take_back(ahead, t)
+        if ahead.renewed_ns is not None:
+            self.world.repeat_command(ahead.renewed_ns)
         ahead.settled = True
-        node = ahead.node
-        if index == 1:  # it acted at once: the lockstep is cheaper for a while
+        self._ahead = None
+        timing.count("moments run without a round trip", passed)
+        wake = ahead.wake_ns
+        if ahead.acted and t == ahead.t_ns:  # it acted at once: the lockstep is cheaper for a while, then try again
             node.misses += 1
             node.moments_cap, node.pause = 1, min(2 ** node.misses, MAX_MOMENTS)
-        else:
-            node.misses = 0
-            node.moments_cap = min(node.moments_cap * 2, MAX_MOMENTS) if index > len(ahead.later) else index - 1
-        timing.count("moments run without a round trip", index - 1)
-        return ahead.later[index - 2][0] if index > 1 else ahead.t_ns
+            node.free_ns = FIRST_FREE_NS
+            return
+        node.misses = 0
+        node.moments_cap = min(node.moments_cap * 2, MAX_MOMENTS) if passed == len(ahead.later) else max(1, passed)
+        if wake is None:
+            return
+        if not ahead.acted:  # past its wake-up (or only up to it) it did nothing that mattered: run further
+            node.free_ns = min(max(2 * node.free_ns, FIRST_FREE_NS), MAX_FREE_NS)
+        else:  # a P controller's changing commands, say: run ahead no further than it got this time
+            node.free_ns = max(0, t - wake)
 
-    def _take_back(self, ahead: _Speculation, kept: int) -> None:
-        """Put the world back where it was after the first ``kept`` chunks run ahead (MuJoCo's state and the world's
-        own, then the same advances again: bit for bit what the lockstep would have)."""
-        if kept == len(ahead.chunks):
+    def _take_back(self, ahead: _Speculation, t_ns: int) -> None:
+        """Put the world back where it was at ``t_ns`` (MuJoCo's state and the world's own, then the same advance
+        again: bit for bit what the lockstep would have) and forget what it published after then."""
+        if self.world.time_ns == t_ns:
             return
         started = time.perf_counter()
-        self.world.restore(ahead.snapshot)
-        for chunk in ahead.chunks[:kept]:
-            self.world.advance_to(chunk.target)
-        self.seq = dict(ahead.chunks[kept - 1].seq_after) if kept else ahead.seq_before
+        at, snapshot = next((at, snapshot) for at, snapshot in reversed(ahead.snapshots) if at <= t_ns)
+        timing.count("simulated milliseconds run ahead in vain", (self.world.time_ns - at) / 1e6)
+        self.world.restore(snapshot)
+        if t_ns > at:
+            self.world.advance_to(t_ns)
+        dropped = ahead.items[ahead.committed:]
+        del ahead.items[ahead.committed:]
+        for item in dropped:
+            if item.seq >= 0:
+                self.seq[item.topic] = min(self.seq[item.topic], item.seq)
         timing.add("world run ahead and taken back", time.perf_counter() - started)
-        timing.count("world advances taken back", len(ahead.chunks) - kept)
+        timing.count("world advances taken back")
 
     # -- what nodes do -----------------------------------------------------------------------------------------
     def _node_event(self, node: _Node, event: object, t: int) -> ServiceReply | None:
@@ -647,14 +721,18 @@ class Session:
     def _route(self, publisher: Endpoint, data: bytes, t: int) -> None:
         """Hand a node's publication to everything connected to its publisher at t."""
         for key in self._receivers(publisher, t):
-            self._hand_over(key, publisher, data)
+            self._hand_over(key, publisher, data, t)
             if publisher.latched is not None:
                 publisher.latched.receivers.add(key)
 
-    def _hand_over(self, key, publisher: Endpoint, data: bytes) -> None:
+    def _hand_over(self, key, publisher: Endpoint, data: bytes, t: int) -> None:
         if key == ROBOT:
-            linear, angular = self.wire.decode_command(publisher.type, data)
-            self.world.command(publisher.topic, linear=linear, angular=angular)
+            if self._ahead is not None:  # the command in force, repeated (see _inert_publishers)
+                self._ahead.renewed_ns = t
+            else:
+                linear, angular = self.wire.decode_command(publisher.type, data)
+                self.world.command(publisher.topic, linear=linear, angular=angular)
+            self._robot_command = (publisher.type, data)
             self.received[publisher.topic] = self.received.get(publisher.topic, 0) + 1
         else:
             index, ident = key
@@ -678,7 +756,7 @@ class Session:
                 for key in self._receivers(pub, t):
                     if key not in held.receivers:
                         held.receivers.add(key)
-                        self._hand_over(key, pub, held.data)
+                        self._hand_over(key, pub, held.data, t)
 
     def _latched_connect_times(self, t: int) -> list[int]:
         """Future times at which a held latched message goes out (its publisher connects)."""
@@ -749,13 +827,16 @@ class Session:
             return _Encoded(sample.topic, self.wire.twist_type, self.wire.twist(sample.linear, sample.angular),
                             sample.t_ns, DRIVER_CALLERID, "grader", False)
         publication = self.publications[sample.topic]
-        return _Encoded(sample.topic, publication.type, self.wire.encode(sample, self._next_seq(sample.topic)),
-                        sample.t_ns, self.world.node_name, "world", publication.to_nodes)
+        seq = self._next_seq(sample.topic)
+        return _Encoded(sample.topic, publication.type, self.wire.encode(sample, seq), sample.t_ns,
+                        self.world.node_name, "world", publication.to_nodes, seq)
 
     def _commit(self, item: _Encoded, queue: bool) -> None:
         """Record a world message and count it for its subscribers, queueing it for their next batch if ``queue``
         (a later moment's deliveries went out in the batch already)."""
         self._recorder.write(item.topic, item.type, item.data, item.t_ns, callerid=item.callerid, origin=item.origin)
+        if item.seq < 0:  # a scripted command: the base now has another command than any node's
+            self._robot_command = None
         if item.to_nodes:
             self._deliver(item.topic, item.type, item.data, queue)
 

@@ -1,6 +1,7 @@
-"""Batches of moments: the world runs ahead of a node that is only receiving messages, the node runs those later
-moments on its own, and the world is taken back to the moment where the node did something visible. The recording
-must be the plain lockstep's, byte for byte, whatever the node does in its callbacks."""
+"""Batches of moments: the world runs ahead of a node, the node runs the later moments (deliveries, and its own
+wake-ups up to the horizon) on its own while what it does cannot change the world, and the world is taken back to
+the moment where the node did something that could. The recording must be the plain lockstep's, byte for byte,
+whatever the node does."""
 from __future__ import annotations
 
 import hashlib
@@ -13,6 +14,7 @@ from grader.runtime import NodeSpec, RunSpec
 from grader.runtime import session
 from grader.runtime.session import run
 from sim import Pose2D, Scenario
+from sim.scenario import ScriptedCommand
 
 REFERENCE = Path(__file__).resolve().parents[2] / "reference_solutions"
 
@@ -147,3 +149,64 @@ def test_a_world_run_ahead_is_taken_back_when_the_node_acts_early(tmp_path, monk
                                         main="rospy.spin()"))
     _, batched = _both(tmp_path, script, Scenario(duration=8.0, shutdown_at=7.0), monkeypatch)
     assert batched["# world advances taken back"] > 0
+
+
+_DRIVER = """import rospy
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+rospy.init_node("driver")
+pub = rospy.Publisher("/cmd_vel", Twist, queue_size=10{latch})
+x = [0.0]
+def callback(msg):
+    x[0] = msg.pose.pose.position.x
+{subscribe}
+rate = rospy.Rate({hz})
+cmd = Twist()
+while not rospy.is_shutdown():
+{body}
+    rate.sleep()
+"""
+_ODOM = 'rospy.Subscriber("/odom", Odometry, callback)'
+_ONE_COMMAND = "    cmd.linear.x = 0.2 if x[0] < 0.5 else 0.0\n    pub.publish(cmd)"
+
+# Nodes that drive the robot (publish from their main loop), on scenarios where repeating a command is, or is not,
+# something the world notices: (scenario, node fields). The Husky's odometry is not /odom: that node only publishes,
+# and as its command times out before it repeats it, each repeat is a new command.
+DRIVERS = {
+    "repeats one command, then another": (Scenario(duration=8.0), {}),
+    "a proportional controller: a new command every time": (
+        Scenario(duration=8.0), {"body": "    cmd.linear.x = 0.5 * (0.6 - x[0])\n    pub.publish(cmd)"}),
+    "publishes only (no subscription: batches of its own wake-ups)": (Scenario(duration=8.0), {"subscribe": ""}),
+    "stops publishing for a while, past the base's 0.5 s timeout": (
+        Scenario(duration=8.0, base_mode="real"),
+        {"body": "    if int(rospy.get_time()) % 3 != 0:\n        cmd.linear.x = 0.1\n        pub.publish(cmd)"}),
+    "repeats its command less often than the Husky's 0.25 s timeout": (
+        Scenario(duration=8.0, robot="husky_a200"), {"hz": 3}),
+    "repeats its command across a scripted one": (
+        Scenario(duration=8.0, script=[ScriptedCommand(t=2.0, linear=-0.1), ScriptedCommand(t=2.5, angular=0.5)]),
+        {}),
+    "subscribes to its own commands": (
+        Scenario(duration=8.0), {"subscribe": _ODOM + '\nrospy.Subscriber("/cmd_vel", Twist, lambda m: None)'}),
+    "latches its commands": (Scenario(duration=8.0), {"latch": ", latch=True"}),
+    "logs and prints as it drives": (
+        Scenario(duration=8.0), {"body": _ONE_COMMAND + "\n    rospy.loginfo('x %.3f', x[0])\n    print(x[0])"}),
+}
+
+
+@pytest.mark.parametrize("case", sorted(DRIVERS))
+def test_a_driving_node_running_ahead_is_recorded_as_in_the_lockstep(tmp_path, monkeypatch, case):
+    scenario, fields = DRIVERS[case]
+    script = tmp_path / "driver.py"
+    script.write_text(_DRIVER.format(**{"latch": "", "subscribe": _ODOM, "hz": 10, "body": _ONE_COMMAND, **fields}))
+    stepped, batched = _both(tmp_path, script, scenario, monkeypatch)
+    if "Husky" not in case:
+        assert batched["# node steps (BATCH frames)"] < stepped["# node steps (BATCH frames)"]
+
+
+def test_a_node_that_repeats_its_command_needs_a_round_trip_only_now_and_then(tmp_path, monkeypatch):
+    """Repeating the robot's command in force changes nothing in the world but the base's timeout (Gazebo's has
+    none): the node runs its own wake-ups, a quarter of a second past each, without the grader."""
+    script = tmp_path / "driver.py"
+    script.write_text(_DRIVER.format(latch="", subscribe=_ODOM, hz=10, body=_ONE_COMMAND))
+    stepped, batched = _both(tmp_path, script, Scenario(duration=8.0), monkeypatch)
+    assert batched["# node steps (BATCH frames)"] < 0.25 * stepped["# node steps (BATCH frames)"]

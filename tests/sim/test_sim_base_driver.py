@@ -29,6 +29,24 @@ def test_latch_times_out_strictly_after_the_timeout() -> None:
     assert latch.command_at(1_500_000_001) == (0.0, 0.0)
 
 
+def test_latch_holds_its_command_until_received_plus_timeout() -> None:
+    assert CommandLatch(None).holds_until_ns() is None
+    timed = CommandLatch(500_000_000)
+    assert timed.holds_until_ns() is None  # nothing received: nothing to hold
+    timed.receive(1_000_000_000, 0.2, 0.0)
+    assert timed.holds_until_ns() == 1_500_000_000
+
+
+def test_a_renewed_command_holds_a_timeout_past_the_renewal() -> None:
+    """What a run ahead leaves to do for a node that repeated the command: only the timeout starts again."""
+    latch = CommandLatch(500_000_000)
+    latch.receive(1_000_000_000, 0.2, 0.1)
+    latch.renew(1_400_000_000)
+    assert latch.command_at(1_900_000_000) == (0.2, 0.1)
+    assert latch.command_at(1_900_000_001) == (0.0, 0.0)
+    assert latch.holds_until_ns() == 1_900_000_000
+
+
 def test_latch_reads_non_finite_values_as_zero() -> None:
     latch = CommandLatch(None)
     latch.receive(0, math.nan, math.inf)

@@ -226,3 +226,27 @@ def test_state_names_pose_twist_and_wheels() -> None:
     state = world.state()
     assert {"x", "y", "yaw", "vx", "vy", "wz", "wheel_left", "wheel_right"} <= set(state)
     assert (state["x"], state["y"], state["yaw"]) == pytest.approx((1.0, -1.0, 0.5), abs=1e-6)
+
+
+def test_the_next_scripted_command_is_known_ahead_until_none_is_left() -> None:
+    world = World(Scenario(duration=3.0, script=[ScriptedCommand(t=0.5, linear=0.1), ScriptedCommand(t=1.0)]))
+    start = world.time_ns
+    assert world.next_scripted_command_ns == start + 500_000_000
+    world.advance_to(start + 600_000_000)
+    assert world.next_scripted_command_ns == start + 1_000_000_000
+    world.advance_to(start + 1_100_000_000)
+    assert world.next_scripted_command_ns is None
+
+
+def test_a_repeated_command_restarts_the_base_timeout_from_when_it_came() -> None:
+    """World.repeat_command is what a run ahead owes a node that repeated its command: with it the real TurtleBot3's
+    0.5 s timeout runs from the repeat, not from the first command."""
+    world = World(Scenario(base_mode="real", duration=3.0))
+    start = world.time_ns
+    world.command("/cmd_vel", linear=(0.2, 0.0, 0.0))
+    assert world.command_holds_until_ns() == start + 500_000_000
+    world.advance_to(start + 400_000_000)
+    world.repeat_command(start + 300_000_000)
+    assert world.command_holds_until_ns() == start + 800_000_000
+    world.advance_to(start + 790_000_000)
+    assert world.state()["command_linear"] == pytest.approx(0.2)

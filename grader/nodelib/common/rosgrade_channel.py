@@ -10,7 +10,7 @@ import os
 import re
 import struct
 
-PROTOCOL = 5
+PROTOCOL = 6
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000
@@ -69,6 +69,7 @@ _HEADER = struct.Struct("<IB")
 _ID = struct.Struct("<I")
 _ID_LEN = struct.Struct("<II")
 _STREAM = struct.Struct("<B")
+_TIME = struct.Struct("<Q")
 # Every lockstep step sends one BATCH and one WAIT, and almost all of them carry nothing but times: those two
 # headers are written and read without the json module (the same bytes json.dumps writes, so the contract is still
 # JSON); anything else goes through json.
@@ -99,7 +100,10 @@ def encode_batch(header: dict, deliveries: list[tuple[int, bytes]]) -> bytes:
 
     Payload: ``u32 header length | header JSON | (u32 topic handle | u32 length | message bytes)*``. A header's
     ``moments`` (``[[t_ns, clock_ns, deliveries], ...]``) are later times the node may run on its own: the last
-    that many deliveries belong to them, in order, and the rest to the batch's own time.
+    that many deliveries belong to them, in order, and the rest to the batch's own time. ``until`` is how far the
+    world has run ahead: the node may also run its own wake-ups up to it. ``inert`` names the publishers whose
+    messages cannot change the world before then (``"any"``), or only when they repeat the publisher's last
+    message (``"same"``): publishing on them, logging and printing do not end the node's run on its own.
     """
     t_ns, clock_ns = header.get("t_ns"), header.get("clock_ns")
     if len(header) == 2 and type(t_ns) is int and type(clock_ns) is int and t_ns >= 0 and clock_ns >= 0:
@@ -112,16 +116,16 @@ def encode_batch(header: dict, deliveries: list[tuple[int, bytes]]) -> bytes:
     return encode(BATCH, b"".join(parts))
 
 
-def encode_moment(index: int) -> bytes:
-    """A MOMENT frame: the node ran the moment ``index`` (1 is the batch's own time) of a batch of several moments,
-    did something there (everything it sends next happens then) or stopped after it, and skipped the later ones."""
-    return encode(MOMENT, _ID.pack(index))
+def encode_moment(t_ns: int) -> bytes:
+    """A MOMENT frame: the node is at world time ``t_ns`` of a batch of moments (the batch's own time, a later
+    moment's or a wake-up of its own before the batch's horizon); everything it sends next happens then."""
+    return encode(MOMENT, _TIME.pack(t_ns))
 
 
 def split_moment(payload: bytes) -> int:
-    if len(payload) != 4:
-        raise ChannelError("MOMENT frame payload is not one 4-byte moment number")
-    return _ID.unpack(payload)[0]
+    if len(payload) != 8:
+        raise ChannelError("MOMENT frame payload is not one 8-byte world time")
+    return _TIME.unpack(payload)[0]
 
 
 def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:

@@ -24,13 +24,20 @@ class Moment:
 class Batch:
     """What the grader sent in answer to a WAIT (one BATCH frame)."""
 
-    __slots__ = ("t_ns", "clock_ns", "deliveries", "moments", "shutdown", "connections", "params")
+    __slots__ = ("t_ns", "clock_ns", "deliveries", "moments", "until_ns", "inert", "shutdown", "connections",
+                 "params")
 
     def __init__(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], moments: list[Moment],
-                 shutdown: str | None, connections: dict[int, int], params: list[tuple[str, object]]) -> None:
+                 until_ns: int | None, inert: dict[int, bool], shutdown: str | None, connections: dict[int, int],
+                 params: list[tuple[str, object]]) -> None:
         self.t_ns, self.clock_ns, self.deliveries = t_ns, clock_ns, deliveries
-        # Later times, in order, that the node runs on its own while what it does is invisible (see Scheduler).
+        # Later times, in order, that the node runs on its own while what it does is invisible (see Scheduler), and
+        # how far the world ran ahead (None: a plain batch): the node's own wake-ups up to then are moments too.
         self.moments = moments
+        self.until_ns = until_ns
+        # Publisher handles whose messages change nothing before until_ns: True, any message; False, only the
+        # publisher's last message again (a robot's command repeated).
+        self.inert = inert
         self.shutdown = shutdown
         self.connections = connections  # changed connection counts per topic handle
         # Parameter changes other nodes (or the world) made since the last batch, in order: [name, value (None:
@@ -45,19 +52,28 @@ class Link:
         self._reader = ch.FrameReader(read_fd, ch.GRADER_KINDS)
         self._wfd = write_fd
         self._lock = threading.Lock()
-        self.frames_sent = 0
-        # The moment of a batch of moments the node is at, until the grader has been told (a MOMENT frame goes out
-        # in the same write as the next frame, or alone at exit).
+        # The time of the moment of a batch of moments the node is at, until the grader has been told (a MOMENT
+        # frame goes out in the same write as the next frame, or alone at exit).
         self.pending_moment: int | None = None
+        # Set by any frame that could change the world or the node's next batches: it ends a batch of moments.
+        self.acted = False
+        self._inert: dict[int, bool] = {}
+        self._last: dict[int, bytes] = {}  # each publisher's last message, as the grader also keeps it
 
-    def send(self, frame: bytes) -> None:
+    def begin_moments(self, t_ns: int, inert: dict[int, bool]) -> None:
+        """A batch of moments starts at ``t_ns``: nothing has been done yet; ``inert`` as in Batch."""
+        self.pending_moment, self.acted, self._inert = t_ns, False, inert
+
+    def send(self, frame: bytes, inert: bool = False) -> None:
+        """Write one frame; ``inert``: it cannot change the world (a log line, printed text, an inert message)."""
         try:
             with self._lock:
                 if self.pending_moment is not None:
                     frame = ch.encode_moment(self.pending_moment) + frame
                     self.pending_moment = None
                 ch.write_all(self._wfd, frame)
-                self.frames_sent += 1
+                if not inert:
+                    self.acted = True
         except OSError as exc:
             # The grader is gone: there is nobody left to run for.
             _fail(exc)
@@ -73,14 +89,18 @@ class Link:
             pass  # the grader is gone: nobody is left to tell
 
     def send_json(self, kind: int, obj: dict) -> None:
-        self.send(ch.encode_json(kind, obj))
+        self.send(ch.encode_json(kind, obj), inert=kind == ch.LOG)
 
     def send_output(self, stream: int, data: bytes) -> None:
         for start in range(0, len(data), _OUTPUT_CHUNK):
-            self.send(ch.encode_output(stream, data[start:start + _OUTPUT_CHUNK]))
+            self.send(ch.encode_output(stream, data[start:start + _OUTPUT_CHUNK]), inert=True)
 
     def send_message(self, kind: int, ident: int, data: bytes) -> None:
-        self.send(ch.encode_id_bytes(kind, ident, data))
+        """A PUBLISH: inert when the grader said so for its publisher (for "same", when it repeats the last one)."""
+        grant = self._inert.get(ident)
+        inert = grant is True or (grant is False and self._last.get(ident) == data)
+        self._last[ident] = data
+        self.send(ch.encode_id_bytes(kind, ident, data), inert)
 
     def call(self, header: dict, request: bytes) -> tuple[dict, bytes]:
         """Send a CALL and read its REPLY: (the reply's header, the response bytes).
@@ -108,8 +128,14 @@ class Link:
             header, deliveries = ch.decode_batch(self._read(ch.BATCH))
             shutdown = header.get("shutdown")
             moments = _moments(header.get("moments") or [], deliveries)
-            return Batch(t_ns=_int(header, "t_ns"), clock_ns=_int(header, "clock_ns"), deliveries=deliveries,
-                         moments=moments, shutdown=None if shutdown is None else str(shutdown),
+            until = header.get("until")
+            t_ns = _int(header, "t_ns")
+            if (until is None and moments) or (until is not None and _count(until, "until") < max(
+                    [t_ns, *(m.t_ns for m in moments)])):
+                raise ch.ChannelError("BATCH until must come with moments, at or after the batch's last time")
+            return Batch(t_ns=t_ns, clock_ns=_int(header, "clock_ns"), deliveries=deliveries,
+                         moments=moments, until_ns=None if until is None else _count(until, "until"),
+                         inert=_grants(header.get("inert") or {}), shutdown=None if shutdown is None else str(shutdown),
                          connections=_counts(header.get("connections") or {}),
                          params=_changes(header.get("params") or []))
         except (ch.ChannelError, OSError) as exc:
@@ -157,6 +183,15 @@ def _moments(obj, deliveries: list[tuple[int, bytes]]) -> list[Moment]:
         start += count
     del deliveries[len(deliveries) - sum(counts):]
     return moments
+
+
+def _grants(obj) -> dict[int, bool]:
+    if not isinstance(obj, dict) or not all(grant in ("any", "same") for grant in obj.values()):
+        raise ch.ChannelError('BATCH inert must map publisher handles to "any" or "same"')
+    try:
+        return {int(ident): grant == "any" for ident, grant in obj.items()}
+    except ValueError:
+        raise ch.ChannelError("BATCH inert must map publisher handles to grants") from None
 
 
 def _changes(obj) -> list[tuple[str, object]]:

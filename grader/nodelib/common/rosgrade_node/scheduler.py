@@ -93,12 +93,10 @@ class Scheduler:
         # Threads started outside the token (from a thread the scheduler does not manage) wait here.
         self._outside = threading.Condition()
         self.adopted: list[_Waiter] = []  # student threads, in start order
-        # The later moments of the current batch not run yet, and what must not change for the node to run them:
-        # the frames it has sent and the wake-up it asked for.
+        # The later moments of the current batch not run yet, and how far the world ran ahead for them (None: no
+        # batch of moments is being run).
         self._later: deque[Moment] = deque()
-        self._moment = 1
-        self._frames_mark = 0
-        self._waited_for: int | None = None
+        self._until: int | None = None
 
     # -- queries ---------------------------------------------------------------------------------------------------
     def holds_token(self) -> bool:
@@ -278,30 +276,37 @@ class Scheduler:
     def _exchange(self) -> None:
         """Send WAIT with the earliest deadline, apply the grader's batch and queue the threads it wakes.
 
-        A batch may carry later moments (times before the node's wake-up at which it only receives messages). The
-        node runs them on its own, each at its own time, as long as what it did stays invisible: no frame sent, the
-        same wake-up, no interrupt. Then the grader, which ran the world ahead speculatively, has nothing to undo.
-        At the first moment where that fails the node stops, tells the grader which moment it is at (MOMENT, in the
-        same write as its next frame) and skips the rest: the grader takes the world back to that moment."""
+        A batch may carry later moments (times at which it only receives messages) and a horizon the world has run
+        ahead to. The node runs those moments, and its own wake-ups up to the horizon, on its own, as long as
+        nothing it did can change the world or its next batches: only log lines, printed text and the messages the
+        batch calls inert (see Link.send). Then the grader, which ran the world ahead speculatively, has nothing to
+        undo. Each moment's time goes to the grader (MOMENT) before the first frame sent there; at the first moment
+        where the node acts otherwise it stops there and skips the rest: the grader takes the world back to it."""
         deadlines = [w.deadline_ns for w in self._blocked if w.deadline_ns is not None]
         wake = min(deadlines) if deadlines else None
-        if self._later:
-            if self.link.frames_sent == self._frames_mark and wake == self._waited_for \
-                    and self.interrupt_pending is None:
-                moment = self._later.popleft()
-                self._moment += 1
-                self.link.pending_moment = self._moment
-                self._apply(moment.t_ns, moment.clock_ns, moment.deliveries, None)
-                return
+        if self._until is not None:
+            if not self.link.acted and self.interrupt_pending is None:
+                later = self._later[0] if self._later else None
+                if wake is not None and wake <= self._until and (later is None or wake < later.t_ns):
+                    # a wake-up of its own: the grader's lockstep would stop here with nothing to deliver
+                    self.link.pending_moment = wake
+                    self._apply(wake, (wake // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS, [], None)
+                    return
+                if later is not None:
+                    self._later.popleft()
+                    self.link.pending_moment = later.t_ns
+                    self._apply(later.t_ns, later.clock_ns, later.deliveries, None)
+                    return
             self._later.clear()
+            self._until = None
         self.link.send(ch.encode_wait(wake))
         batch = self.link.read_batch()
         self.connections.update(batch.connections)
         rosgrade_params.apply(self.param_tree, batch.params)
-        if batch.moments:
+        if batch.until_ns is not None:
             self._later.extend(batch.moments)
-            self._moment = self.link.pending_moment = 1
-            self._frames_mark, self._waited_for = self.link.frames_sent, wake
+            self._until = batch.until_ns
+            self.link.begin_moments(batch.t_ns, batch.inert)
         self._apply(batch.t_ns, batch.clock_ns, batch.deliveries, batch.shutdown)
 
     def _apply(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None) -> None:

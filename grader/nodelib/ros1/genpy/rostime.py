@@ -31,6 +31,9 @@ class TVal:
     _slot_types = ["int32", "int32"]
 
     def __init__(self, secs=0, nsecs=0):
+        if type(secs) is int and type(nsecs) is int and 0 <= nsecs < _NS:  # already canonical: most values a node makes
+            self.secs, self.nsecs = secs, nsecs
+            return
         if type(secs) is not int and not isinstance(secs, numbers.Integral):  # an ABC check only when not an int
             # a float (or anything else) is taken as seconds; genpy computes int() first, then the fraction
             if nsecs != 0:
@@ -121,7 +124,7 @@ class Time(TVal):
     __slots__ = []
 
     def __init__(self, secs=0, nsecs=0):
-        super().__init__(secs, nsecs)
+        TVal.__init__(self, secs, nsecs)
         if self.secs < 0:
             raise TypeError("time values must be positive")
 
