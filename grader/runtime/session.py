@@ -65,6 +65,9 @@ MAX_FREE_NS = 250_000_000
 FIRST_FREE_NS = 50_000_000
 # How far the world runs ahead of a node that waits only for messages.
 MAX_AHEAD_NS = 2_000_000_000
+# Sim time between two snapshots of a world run ahead: a snapshot costs about what 2 ms of physics do, and taking the
+# world back re-runs the physics from the last one before the moment the node stopped at.
+SNAPSHOT_SPACING_NS = 100_000_000
 
 
 class RunError(Exception):
@@ -132,7 +135,7 @@ class _Speculation:
     t_ns: int
     wake_ns: int | None  # the node's wake-up when the batch went out
     inert: dict[int, bool]  # the batch's inert publishers (see rosgrade_channel.encode_batch)
-    # The world before each advance, by time: taking it back re-runs at most one advance.
+    # The world before some of the advances, by time (see SNAPSHOT_SPACING_NS).
     snapshots: list[tuple[int, object]] = field(default_factory=list)
     items: list[_Encoded] = field(default_factory=list)  # what the world published on the way, in time order
     later: list[tuple[int, int, list[tuple[int, bytes]]]] = field(default_factory=list)  # (t, clock, deliveries)
@@ -463,7 +466,8 @@ class Session:
             target = due if due is not None and due <= limit else limit
             if target <= self.world.time_ns:
                 break
-            ahead.snapshots.append((self.world.time_ns, snapshot()))
+            if not ahead.snapshots or self.world.time_ns - ahead.snapshots[-1][0] >= SNAPSHOT_SPACING_NS:
+                ahead.snapshots.append((self.world.time_ns, snapshot()))
             samples = self.world.advance_to(target)
             stepped = time.perf_counter()
             timing.add("physics and sensors", stepped - started)
