@@ -4,7 +4,8 @@ Managed threads are the main thread, one callback thread per subscribed topic, r
 student starts from a managed thread (see threads.py). Exactly one of
 them holds the token and runs; a blocking library call (``block``) registers a wake condition and passes the token on.
 When no thread can run, the thread that blocked last sends ``WAIT {wake_ns}`` and applies the grader's batch (or, in a
-batch of several moments, moves on to the next one itself while the node has done nothing visible). After a batch or
+batch of moments, moves on itself to the next later moment or wake-up of its own while nothing it did could change the
+world). After a batch or
 moment the order is fixed: topic threads that received messages (in delivery order), then threads whose wake
 condition holds, by (deadline, time of blocking), then the main thread if only a shutdown request woke it. Student
 code therefore interleaves as a function of the grader's batches alone.
