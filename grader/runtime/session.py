@@ -462,7 +462,6 @@ class Session:
         ahead = _Speculation(node, t, wake, inert, now_ns=t)
         started = time.perf_counter()
         while len(ahead.later) < node.moments_cap:
-            due = self.world.next_output_ns(self._listened)
             target = due if due is not None and due <= limit else limit
             if target <= self.world.time_ns:
                 break
@@ -477,6 +476,7 @@ class Session:
                           for sub in _listening(node, item.topic, item.type)]
             if deliveries:
                 ahead.later.append((target, self._clock_ns(node.link, target), deliveries))
+            due = self.world.next_output_ns(self._listened)
             started = time.perf_counter()
             timing.add("world messages (encode, record, queue)", started - stepped)
         ahead.until_ns = self.world.time_ns
@@ -490,20 +490,19 @@ class Session:
         True for any message (recorded only), False when only its last message again is (the robot's command in
         force, repeated). Latched publishers never are: a latched message is kept for later subscribers."""
         inert: dict[int, bool] = {}
+        holds = self.world.command_holds_until_ns()
         for pub in node.link.state.publishers.values():
             if pub.closed or pub.latch:
                 continue
-            world_only = pub.topic in self.publications and not self.publications[pub.topic].shared
-            if world_only or pub.topic == "/clock" or pub.topic.startswith("/rosgrade/") or t < self._ready_ns(pub):
+            if self._ignored(pub) or t < self._ready_ns(pub):
                 inert[pub.ident] = True  # ignored, or lost before its publisher connects
                 continue
             receivers = self._receivers(pub, t)
             if not receivers:
                 inert[pub.ident] = True
-            elif receivers == [ROBOT] and pub.last_data is not None and self._robot_command == (pub.type, pub.last_data):
-                holds = self.world.command_holds_until_ns()
-                if holds is None or holds > t:
-                    inert[pub.ident] = False
+            elif receivers == [ROBOT] and pub.last_data is not None \
+                    and self._robot_command == (pub.type, pub.last_data) and (holds is None or holds > t):
+                inert[pub.ident] = False
         return inert
 
     def _moment(self, ahead: _Speculation, t_ns: int) -> int:
@@ -769,8 +768,7 @@ class Session:
                 if pub.latched is not None and not pub.closed and self._ready_ns(pub) > t]
 
     def _publication(self, node: _Node, endpoint: Endpoint, data: bytes, t: int) -> None:
-        world_only = endpoint.topic in self.publications and not self.publications[endpoint.topic].shared
-        if world_only or endpoint.topic == "/clock" or endpoint.topic.startswith("/rosgrade/"):
+        if self._ignored(endpoint):
             # only the world and the grader speak here
             note = (f"{node.outcome.script} published on {endpoint.topic}, which only the simulated robot and the "
                     "grader publish; those messages were ignored.")
@@ -793,6 +791,12 @@ class Session:
         self._recorder.write(endpoint.topic, endpoint.type, data, t, callerid=node.callerid, latching=endpoint.latch,
                              origin="node")
         self._route(endpoint, data, t)
+
+    def _ignored(self, publisher: Endpoint) -> bool:
+        """Whether a node's publisher is on a topic only the world or the grader publish (its messages are ignored)."""
+        topic = publisher.topic
+        world_only = topic in self.publications and not self.publications[topic].shared
+        return world_only or topic == "/clock" or topic.startswith("/rosgrade/")
 
     def _lost(self, node: _Node, endpoint: Endpoint, data: bytes, t: int) -> None:
         endpoint.dropped_before_connect += 1

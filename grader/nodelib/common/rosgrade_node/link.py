@@ -128,13 +128,12 @@ class Link:
             header, deliveries = ch.decode_batch(self._read(ch.BATCH))
             shutdown = header.get("shutdown")
             moments = _moments(header.get("moments") or [], deliveries)
-            until = header.get("until")
             t_ns = _int(header, "t_ns")
-            if (until is None and moments) or (until is not None and _count(until, "until") < max(
-                    [t_ns, *(m.t_ns for m in moments)])):
+            until = None if header.get("until") is None else _int(header, "until")
+            if (until is None and moments) or (until is not None and until < max([t_ns, *(m.t_ns for m in moments)])):
                 raise ch.ChannelError("BATCH until must come with moments, at or after the batch's last time")
             return Batch(t_ns=t_ns, clock_ns=_int(header, "clock_ns"), deliveries=deliveries,
-                         moments=moments, until_ns=None if until is None else _count(until, "until"),
+                         moments=moments, until_ns=until,
                          inert=_grants(header.get("inert") or {}), shutdown=None if shutdown is None else str(shutdown),
                          connections=_counts(header.get("connections") or {}),
                          params=_changes(header.get("params") or []))
