@@ -30,6 +30,10 @@ class NodeExited(Exception):
     """The node's end of the channel closed."""
 
 
+class NodeOverLimit(Exception):
+    """The node's processes together went over a limit while the grader waited for it; it is stopped."""
+
+
 @dataclass
 class Endpoint:
     """A publisher or subscriber the node registered."""
@@ -155,7 +159,8 @@ class NodeLink:
     watchdog: a node that neither yields nor reads is stopped, the grader goes on."""
 
     def __init__(self, read_fd: int, write_fd: int, catalog: MessageCatalog, silent_wall_s: float,
-                 output_cap: int, reserved_names: frozenset[str] = frozenset()) -> None:
+                 output_cap: int, reserved_names: frozenset[str] = frozenset(),
+                 over_limit: Callable[[], str | None] | None = None, check_every_s: float = 1.0) -> None:
         self._reader = ch.FrameReader(read_fd, ch.NODE_KINDS, before_read=self._wait_readable)
         self._write_fd = write_fd
         os.set_blocking(write_fd, False)
@@ -165,6 +170,8 @@ class NodeLink:
         self._output_cap = output_cap
         self._reserved = reserved_names
         self._deadline = 0.0
+        self._over_limit = over_limit
+        self._check_every_s = check_every_s
         self._partial = {1: bytearray(), 2: bytearray()}
         self.state = NodeState()
 
@@ -178,15 +185,26 @@ class NodeLink:
             timing.add("waiting for nodes", time.perf_counter() - started)
 
     def _select_until_readable(self) -> None:
+        # A long wait may be a node (or its children) eating the machine: its totals are checked meanwhile, so that
+        # it is stopped for that, and in time, rather than for its silence once the watchdog runs out.
+        check_at = time.monotonic() + self._check_every_s
         while True:
-            remaining = self._deadline - time.monotonic()
             writing = [self._write_fd] if self._pending else []
-            readable, writable, _ = select.select([self._reader.fd], writing, [], max(remaining, 0))
+            timeout = max(min(self._deadline, check_at) - time.monotonic(), 0)
+            readable, writable, _ = select.select([self._reader.fd], writing, [], timeout)
             if writable:
                 self._flush()
             if readable:
                 return
-            if not writable:
+            if writable:
+                continue
+            now = time.monotonic()
+            if now >= check_at or now >= self._deadline:
+                check_at = now + self._check_every_s
+                why = self._over_limit() if self._over_limit is not None else None
+                if why:
+                    raise NodeOverLimit(why)
+            if now >= self._deadline:
                 if self._pending:
                     raise NodeSilent(f"did not read the grader's messages for {self._silent_wall_s:g} s of wall time")
                 raise NodeSilent(f"did not yield to the grader for {self._silent_wall_s:g} s of wall time")

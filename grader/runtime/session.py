@@ -26,8 +26,8 @@ from grader.runtime import confine
 from grader.runtime.cpu_claim import one_cpu
 from grader.runtime.diagnostics import diagnose, topic_summary
 from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
-                                      NodeSilent, OutputLine, ParamChange, ProtocolViolation, Publication, ServiceCall,
-                                      ServiceReply)
+                                      NodeOverLimit, NodeSilent, OutputLine, ParamChange, ProtocolViolation,
+                                      Publication, ServiceCall, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
@@ -245,7 +245,7 @@ class Session:
         except ProcessError as exc:
             raise RunError(str(exc)) from None
         link = NodeLink(process.read_fd, process.write_fd, self.catalog, self.spec.limits.silent_wall_s,
-                        self.spec.limits.output_bytes, RESERVED_NAMES)
+                        self.spec.limits.output_bytes, RESERVED_NAMES, process.over_limit, USAGE_PERIOD_S)
         self.nodes.append(_Node(node_spec, process, link,
                                 NodeOutcome(script=node_spec.script.name, findings=list(process.notes))))
 
@@ -256,7 +256,7 @@ class Session:
             link.handshake({"t_ns": t, "params": self._start_params(node_spec),
                             "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t),
                             "world_topics": sorted([topic, type_name] for topic, type_name in self.world_topics)})
-        except (NodeExited, NodeSilent, ProtocolViolation) as exc:
+        except (NodeExited, NodeSilent, NodeOverLimit, ProtocolViolation) as exc:
             self._node_failed(node, exc, t)
             return
         self.params.joined(self.nodes.index(node))
@@ -305,7 +305,7 @@ class Session:
         elif isinstance(exc, NodeSilent):
             self._stop(node, "timeout", f"the node {exc}; it was stopped (an endless loop outside rospy calls, "
                                         "or a blocking call such as input() with nothing to read)")
-        elif isinstance(exc, (OutputLimitExceeded, EndpointLimitExceeded)):
+        elif isinstance(exc, (NodeOverLimit, OutputLimitExceeded, EndpointLimitExceeded)):
             self._stop(node, "killed_by_limit", str(exc))
         else:
             self._stop(node, "protocol_violation", f"the node broke the grader's channel: {exc}")
@@ -415,7 +415,8 @@ class Session:
                 lambda moment: self._moment(ahead, moment), lambda: self._settle(ahead, exact=True))
             if ahead is not None and not ahead.settled:
                 self._settle(ahead, exact=False)
-        except (NodeExited, NodeSilent, ProtocolViolation, OutputLimitExceeded, EndpointLimitExceeded) as exc:
+        except (NodeExited, NodeSilent, NodeOverLimit, ProtocolViolation, OutputLimitExceeded,
+                EndpointLimitExceeded) as exc:
             if ahead is not None and not ahead.settled:
                 self._settle(ahead, exact=True)  # where it ended (or broke the channel): the last moment it named
             self._node_failed(node, exc, ahead.now_ns if ahead is not None else t)

@@ -82,9 +82,13 @@ def test_dev_shm_files_do_not_outlive_the_run(tmp_path):
     assert not Path("/dev/shm", name).exists()
 
 
-def test_children_together_over_the_memory_limit_are_stopped(tmp_path):
+@pytest.mark.parametrize("parent", ["yielding", "hang"])
+def test_children_together_over_the_memory_limit_are_stopped(tmp_path, parent):
+    """Whether the parent goes on yielding or hangs without a word (the grader then checks while it waits), the
+    memory is the cause named, not the silence."""
     limits = Limits(wall_s=30, silent_wall_s=5, cpu_s=20, memory_mb=300, processes=32, output_bytes=200_000)
-    case = run_case("memory_children", tmp_path, limits=limits, scenario=Scenario(duration=60.0, shutdown_at=58.0))
+    case = run_case("memory_children", tmp_path, args=(parent,), limits=limits,
+                    scenario=Scenario(duration=60.0, shutdown_at=58.0))
     assert case.node.status == "killed_by_limit", case.node.message
     assert "processes together used more than its memory limit of 300 MB" in case.node.message
 

@@ -1,0 +1,71 @@
+"""While the grader waits for a silent node it keeps checking the node's totals: a node over its memory or CPU limit
+is stopped for that, within a check period, not for its silence once the watchdog runs out."""
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Iterator
+
+import pytest
+
+from grader.recording import default_catalog
+from grader.runtime.node_link import NodeLink, NodeOverLimit, NodeSilent
+
+CATALOG = default_catalog()
+
+
+class Totals:
+    """A stand-in for NodeProcess.over_limit: over the limit from the ``over_from``-th check on."""
+
+    def __init__(self, over_from: int | None) -> None:
+        self.over_from = over_from
+        self.checks = 0
+
+    def __call__(self) -> str | None:
+        self.checks += 1
+        if self.over_from is not None and self.checks >= self.over_from:
+            return "its processes together used more than its memory limit of 300 MB"
+        return None
+
+
+@pytest.fixture
+def pipes() -> Iterator[tuple[int, int]]:
+    to_grader_r, to_grader_w = os.pipe()
+    to_node_r, to_node_w = os.pipe()
+    yield to_grader_r, to_node_w
+    for fd in (to_grader_r, to_grader_w, to_node_r, to_node_w):
+        os.close(fd)
+
+
+def silent_link(pipes: tuple[int, int], totals: Totals | None, silent_wall_s: float) -> NodeLink:
+    return NodeLink(*pipes, CATALOG, silent_wall_s=silent_wall_s, output_cap=1 << 20, over_limit=totals,
+                    check_every_s=0.05)
+
+
+def test_a_silent_node_over_its_limit_is_stopped_for_the_limit_before_the_watchdog(pipes) -> None:
+    totals = Totals(over_from=3)
+    started = time.monotonic()
+    with pytest.raises(NodeOverLimit, match="memory limit of 300 MB"):
+        silent_link(pipes, totals, silent_wall_s=5.0).run_until_wait(0, lambda event: None)
+    assert totals.checks == 3
+    assert time.monotonic() - started < 2.0
+
+
+def test_a_silent_node_within_its_limits_is_stopped_for_its_silence(pipes) -> None:
+    totals = Totals(over_from=None)
+    with pytest.raises(NodeSilent, match="did not yield to the grader for 0.3 s"):
+        silent_link(pipes, totals, silent_wall_s=0.3).run_until_wait(0, lambda event: None)
+    assert totals.checks >= 4  # every 0.05 s of the 0.3 s, and once more when the watchdog ran out
+
+
+def test_the_limit_is_named_when_the_watchdog_runs_out_between_two_checks(pipes) -> None:
+    totals = Totals(over_from=1)
+    link = NodeLink(*pipes, CATALOG, silent_wall_s=0.1, output_cap=1 << 20, over_limit=totals, check_every_s=60.0)
+    with pytest.raises(NodeOverLimit):
+        link.run_until_wait(0, lambda event: None)
+    assert totals.checks == 1
+
+
+def test_without_a_check_a_silent_node_is_stopped_for_its_silence(pipes) -> None:
+    with pytest.raises(NodeSilent):
+        NodeLink(*pipes, CATALOG, silent_wall_s=0.1, output_cap=1 << 20).run_until_wait(0, lambda event: None)
