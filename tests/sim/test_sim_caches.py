@@ -1,5 +1,5 @@
 """The per-process caches: each distinct model compiles once and each start is run once, and every world built from
-them runs bit-identically to one built from scratch."""
+them runs bit-identically to one built from scratch. A late start waits at rest after the robot has settled."""
 from __future__ import annotations
 
 import hashlib
@@ -9,7 +9,8 @@ import pytest
 
 from sim import Scenario, ScriptedCommand, World, load_robot
 from sim.model import _compile, build_model
-from sim.world import START_STATES, _start_key, _start_states
+from sim import world as world_module
+from sim.world import SETTLE_NS, START_STATES, _start_key, _start_states
 
 WALL = {"kind": "box", "x": 1.0, "y": 0.0, "length": 0.2, "width": 2.0}
 PILLAR = {"kind": "cylinder", "x": 0.0, "y": 0.8, "radius": 0.1}
@@ -113,10 +114,55 @@ def test_a_world_starting_at_zero_keeps_no_start() -> None:
 def test_the_saved_starts_are_bounded_least_recently_used_first() -> None:
     _clear_caches()
     scenarios = [_scenario(start_time=0.05 + i / 600) for i in range(START_STATES + 1)]
-    keys = [_start_key(load_robot(s.robot), "gazebo", s) for s in scenarios]
+    keys = [_start_key(load_robot(s.robot), "gazebo", s, s.start_ns) for s in scenarios]
     for scenario in scenarios[:START_STATES]:
         World(scenario)
     World(scenarios[0])  # used again: now the most recent
     World(scenarios[START_STATES])
     assert len(_start_states) == START_STATES
     assert keys[0] in _start_states and keys[1] not in _start_states and keys[START_STATES] in _start_states
+
+
+def _samples(world: World) -> list:
+    samples = []
+    t_ns = world.time_ns
+    while t_ns < world.end_ns:
+        t_ns = min(t_ns + 10_000_000, world.end_ns)
+        samples += world.advance_to(t_ns)
+    return samples
+
+
+@pytest.mark.parametrize("robot", ["turtlebot3_waffle", "turtlebot3_burger", "husky_a200"])
+def test_a_late_start_waits_at_rest_from_the_settled_robot(robot: str) -> None:
+    _clear_caches()
+    settled = World(_scenario(robot=robot, start_time=SETTLE_NS / 1e9))
+    late = World(_scenario(robot=robot, start_time=40.0))
+    assert len(_start_states) == 1  # one settled robot for both starts
+    assert late.time_ns == 40_000_000_000
+    assert late.data.qpos.tobytes() == settled.data.qpos.tobytes()
+    assert late.data.qvel.tobytes() == settled.data.qvel.tobytes()
+
+
+@pytest.mark.parametrize("robot", ["turtlebot3_waffle", "husky_a200"])
+def test_a_run_after_a_wait_at_rest_is_the_run_after_a_simulated_wait(robot: str, monkeypatch) -> None:
+    """The same samples at the same times, to within nanometres: physics would only have crept the robot."""
+    _clear_caches()
+    rested = _samples(World(_scenario(robot=robot, start_time=12.3)))
+    monkeypatch.setattr(world_module, "SETTLE_NS", 13_000_000_000)
+    simulated_world = World(_scenario(robot=robot, start_time=12.3))
+    assert len(_start_states) == 2
+    simulated = _samples(simulated_world)
+    assert [(type(s), s.t_ns) for s in rested] == [(type(s), s.t_ns) for s in simulated]
+    rested_poses = np.array([s.position for s in rested if hasattr(s, "position")])
+    simulated_poses = np.array([s.position for s in simulated if hasattr(s, "position")])
+    assert rested_poses.shape == simulated_poses.shape and len(rested_poses) > 100
+    assert np.abs(rested_poses - simulated_poses).max() < 1e-6
+    assert rested_poses.tobytes() != simulated_poses.tobytes()  # the creep is there, and it is that small
+
+
+def test_a_robot_still_moving_when_settled_is_simulated_to_its_start(monkeypatch) -> None:
+    monkeypatch.setattr(world_module, "REST_SPEED", 0.0)  # nothing counts as at rest
+    _clear_caches()
+    moving = _digest(World(_scenario(start_time=12.3)))
+    monkeypatch.setattr(world_module, "SETTLE_NS", 13_000_000_000)  # physics all the way to the start
+    assert _digest(World(_scenario(start_time=12.3))) == moving
