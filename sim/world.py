@@ -264,7 +264,7 @@ class World(ScenarioTimes):
     @property
     def next_scripted_command_ns(self) -> int | None:
         """When the scenario's next scripted command is due (None: there is none left)."""
-        return self._script[self._next_script][0] if self._next_script < len(self._script) else None
+        return None if self._next_script_ns == NO_SCRIPT_NS else self._next_script_ns
 
     def listen(self, topics: Collection[str] | None) -> None:
         """Publish the sensor topics among ``topics`` only (None, the default: every sensor), from the next step on.

@@ -446,14 +446,14 @@ class Session:
             node.pause -= 1
             return None
         wake = None if node.wake_ns is None else max(node.wake_ns, t)  # t: it wakes now, by its own deadline
-        inert = self._inert_publishers(node, t)
+        holds = self.world.command_holds_until_ns()
+        inert = self._inert_publishers(node, t, holds)
         bounds = [self.end_ns, *self._latched_connect_times(t)]
         if self.shutdown_ns is not None and not self.shutdown_sent:
             bounds.append(self.shutdown_ns)
         bounds += [ready for pub in node.link.state.publishers.values()
                    if not pub.closed and (ready := self._ready_ns(pub)) > t]
         if False in inert.values():  # a repeated command must find the base as it left it
-            holds = self.world.command_holds_until_ns()
             scripted = self.world.next_scripted_command_ns
             bounds += [b for b in (None if holds is None else holds + 1, scripted) if b is not None]
         limit = min(min(bounds) - 1, t + MAX_AHEAD_NS if wake is None else wake + node.free_ns)
@@ -486,12 +486,12 @@ class Session:
             return None
         return ahead
 
-    def _inert_publishers(self, node: _Node, t: int) -> dict[int, bool]:
+    def _inert_publishers(self, node: _Node, t: int, holds: int | None) -> dict[int, bool]:
         """The node's publishers whose messages cannot change the world or its batches while nothing else changes:
         True for any message (recorded only), False when only its last message again is (the robot's command in
-        force, repeated). Latched publishers never are: a latched message is kept for later subscribers."""
+        force, repeated, while it holds: until ``holds``, the base's command timeout). Latched publishers never are: a
+        latched message is kept for later subscribers."""
         inert: dict[int, bool] = {}
-        holds = self.world.command_holds_until_ns()
         for pub in node.link.state.publishers.values():
             if pub.closed or pub.latch:
                 continue
