@@ -2,13 +2,17 @@
 from __future__ import annotations
 
 import math
+import os
+import re
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import tf
+import rosgrade_transformations
 import tf.transformations as tft
 from genpy import Duration, Time
 from geometry_msgs.msg import Quaternion
@@ -58,14 +62,55 @@ def test_euler_from_quaternion_values():
     assert all(type(v) is float for v in tft.euler_from_quaternion(np.array([0.1, 0.2, 0.3, 0.9])))
 
 
-@pytest.mark.parametrize("axes", ["sxyz", "rzyx", "sxzx", "rxyx"])
-def test_euler_from_quaternion_of_floats_is_numpys_to_the_bit(axes):
+class _DotInOrder:
+    """numpy, but with dot of two vectors summing their products from the first to the last (no BLAS)."""
+
+    def __getattr__(self, name):
+        return getattr(np, name)
+
+    @staticmethod
+    def dot(a, b):
+        total = 0.0
+        for x, y in zip(np.asarray(a).tolist(), np.asarray(b).tolist()):
+            total += x * y
+        return np.float64(total)
+
+
+def _quaternions():
     rng = np.random.default_rng(5)
     for scale in (1e-8, 1e-3, 1.0, 1e4):
-        for q in rng.normal(size=(2000, 4)) * scale:
-            expected = tft.euler_from_matrix(tft.quaternion_matrix(q), axes)  # the numpy code path
-            got = tft.euler_from_quaternion(q.tolist(), axes)
-            assert [v.hex() for v in got] == [float(v).hex() for v in expected], q.tolist()
+        yield from rng.normal(size=(2000, 4)) * scale
+
+
+@pytest.mark.parametrize("axes", ["sxyz", "rzyx", "sxzx", "rxyx"])
+def test_euler_from_quaternion_of_floats_is_tfs_arithmetic_with_the_squares_summed_in_order(axes, monkeypatch):
+    # numpy.dot hands |q|^2 to BLAS, whose kernel (FMA or not, the order of the sum) depends on the CPU: the one step of
+    # tf's code whose bits are not the same everywhere. With it summed in order, the float path is tf's to the bit.
+    monkeypatch.setattr(rosgrade_transformations, "numpy", _DotInOrder())
+    for q in _quaternions():
+        expected = tft.euler_from_matrix(tft.quaternion_matrix(q), axes)
+        got = tft.euler_from_quaternion(q.tolist(), axes)
+        assert [v.hex() for v in got] == [float(v).hex() for v in expected], q.tolist()
+
+
+@pytest.mark.parametrize("axes", ["sxyz", "rzyx", "sxzx", "rxyx"])
+def test_euler_from_quaternion_of_floats_is_within_1e13_of_numpys_path_on_this_cpu(axes):
+    worst = max(abs(a - float(b)) for q in _quaternions()
+                for a, b in zip(tft.euler_from_quaternion(q.tolist(), axes),
+                                tft.euler_from_matrix(tft.quaternion_matrix(q), axes)))
+    assert worst <= 1e-13
+
+
+@pytest.mark.parametrize("limits", [{"NPY_DISABLE_CPU_FEATURES": "X86_V3 X86_V4 AVX512_ICL AVX512_SPR"},
+                                    {"OPENBLAS_CORETYPE": "Prescott"}], ids=["numpy-baseline", "blas-generic"])
+def test_euler_float_path_holds_with_numpy_and_blas_limited_to_their_baseline(limits):
+    # NPY_DISABLE_CPU_FEATURES only names features this numpy dispatches; numpy warns about and ignores the others.
+    env = {**os.environ, **limits, "PYTHONWARNINGS": "ignore"}
+    done = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", __file__,
+                           "-k", "squares_summed_in_order or within_1e13"], capture_output=True, text=True,
+                          timeout=300, env=env, cwd=Path(__file__).parents[2])
+    assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-2000:]
+    assert re.search(r"\b8 passed", done.stdout), done.stdout[-2000:]
 
 
 def test_tf_transformations_imports_numpy_only_when_a_call_needs_it():

@@ -527,8 +527,10 @@ class _Rows(tuple):
 
 
 def _rotation_rows(x: float, y: float, z: float, w: float) -> tuple[tuple[float, float, float], ...]:
-    """quaternion_matrix's 3x3 rotation in plain floats: the same operations in the same order as its numpy code
-    (numpy.dot of four float64s sums them from the first to the last), so the same bits."""
+    """quaternion_matrix's 3x3 rotation in plain floats: its numpy code's operations in its order, with |q|^2 summed
+    from the first square to the last. numpy.dot leaves that sum to the CPU's BLAS kernel (FMA, other orders), so the
+    two paths can differ in |q|^2's last bit and the angles by up to 1e-13 rad; this path's bits are the same on
+    every CPU."""
     nq = ((x * x + y * y) + z * z) + w * w
     if nq < _EPS:
         return (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)
