@@ -213,7 +213,7 @@ class Criterion(_Model):
                     f"quantity {quantity!r} is not measured by {self.metric!r}; "
                     f"expected one of {', '.join(sorted(metric.quantities))}"
                 )
-        known = metric.quantities | FACTS | TEMPLATE_NAMES
+        known = metric.reported | FACTS | TEMPLATE_NAMES
         texts = [self.feedback.passed, self.feedback.partial or "", self.feedback.failed, *(h.text for h in self.hints)]
         for text in texts:
             for name in _template_names(text):
@@ -221,7 +221,7 @@ class Criterion(_Model):
                     raise ValueError(f"feedback field {{{name}}} is unknown; expected one of {', '.join(sorted(known))}")
         for hint in self.hints:
             for cond in hint.when:
-                if cond.quantity not in metric.quantities | FACTS:
+                if cond.quantity not in metric.reported | FACTS:
                     raise ValueError(f"hint condition on unknown quantity {cond.quantity!r}")
         return self
 

@@ -120,7 +120,7 @@ def _evaluate(criterion: Criterion, scenario: Scenario, run: RunData, facts: Mea
     base = {**facts, "lower": lo, "upper": hi, "expected": criterion.expected_text, "scenario": scenario.name,
             "points": criterion.points}
     try:
-        measured = metric.measure(run, criterion.params_for(scenario))
+        measured = metric.judge(run, criterion.params_for(scenario))
     except MetricError as e:
         values = {**base, "credit": 0.0, "score": 0.0, "measured": None}
         return Outcome(scenario.name, 0.0, {}, _join([f"Could not measure this: {e}.", *_hints(criterion, values)]))

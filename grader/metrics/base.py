@@ -10,6 +10,8 @@ from grader.metrics.run import RunData
 
 Value = float | int | str | bool | None
 Measurement = dict[str, Value]
+# What every metric but the shutdown ones reports besides its own quantities: until when it judged the run.
+JUDGED = frozenset({"judged_until_s", "judged_until_ctrl_c"})
 
 
 class MetricError(Exception):
@@ -40,3 +42,20 @@ class Metric:
     quantities: frozenset[str]
     measure: Callable[[RunData, MetricParams], Measurement]
     needs_shutdown: bool = False  # only meaningful on scenarios that send Ctrl+C
+
+    @property
+    def reported(self) -> frozenset[str]:
+        """Every quantity a measurement holds: the metric's own and, unless it judges the shutdown, ``JUDGED``."""
+        return self.quantities if self.needs_shutdown else self.quantities | JUDGED
+
+    def judge(self, run: RunData, params: MetricParams) -> Measurement:
+        """Measure what the criterion judges: the run until Ctrl+C (the shutdown metrics: all of it), saying until
+        when in ``judged_until_s`` (seconds after the start) and ``judged_until_ctrl_c``."""
+        if self.needs_shutdown:
+            return self.measure(run, params)
+        judged = run.until_ctrl_c()
+        ctrl_c = run.shutdown_time()
+        ends = [float(p.t[-1]) for p in (judged.odometry, judged.ground_truth) if p is not None and len(p)]
+        until = ctrl_c if ctrl_c is not None else max(ends, default=run.start_time)
+        return {**self.measure(judged, params), "judged_until_s": until - run.start_time,
+                "judged_until_ctrl_c": ctrl_c is not None}

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 import numpy as np
@@ -188,6 +188,27 @@ class RunData:
         """The requested path up to the Ctrl+C, or all of it when the scenario sends none."""
         shutdown = self.shutdown_time()
         return self.trajectory(source).between(end=math.inf if shutdown is None else shutdown)
+
+    def until_ctrl_c(self) -> RunData:
+        """What happened until the Ctrl+C, the run a metric judges (the shutdown criteria alone judge what came after):
+        poses up to it, what the node did (commands, lines, calls, parameter changes) before it. All of it when the
+        scenario sends none."""
+        end = self.shutdown_time()
+        if end is None:
+            return self
+        cut = self.commands.t < end
+        return replace(
+            self,
+            odometry=self.odometry.between(end=end),
+            ground_truth=None if self.ground_truth is None else self.ground_truth.between(end=end),
+            commands=Commands(self.commands.t[cut], self.commands.linear[cut], self.commands.angular[cut],
+                              tuple(tp for tp, k in zip(self.commands.topic, cut) if k)),
+            lines=tuple(line for line in self.lines if line.t < end),
+            poses={topic: path.between(end=end) for topic, path in self.poses.items()},
+            service_calls=tuple(call for call in self.service_calls if call.t < end),
+            # The first change is the tree the run started with, whenever it was recorded.
+            param_changes=tuple(c for c in self.param_changes if c.t < end or c is self.param_changes[0]),
+        )
 
     def shutdown_time(self) -> float | None:
         """Sim time (s) of the Ctrl+C: as the run recorded it, else as the scenario planned it."""

@@ -34,15 +34,19 @@ def measure(run: RunData, params: Params) -> Measurement:
     if t_req is None:
         raise MetricError("this scenario sends no Ctrl+C, so there is no shutdown to check")
     traj = run.trajectory(params.source)
-    before = path_length(traj.between(end=t_req))
-    if before < params.min_travel:
-        raise MetricError(
-            f"the robot drove only {before:.2f} m before Ctrl+C, so whether it stops on Ctrl+C cannot be seen"
-        )
     after = traj.between(t_req)
     if len(after) < 2:
         raise MetricError("the recording ends at the Ctrl+C, so the stop cannot be seen")
     rest_from = rest_since(after, params.rest_speed, params.rest_turn_rate)
+    before = path_length(traj.between(end=t_req))
+    # A robot that never moved proves nothing about stopping, unless the node answered the Ctrl+C with a zero
+    # command its base takes and the robot stayed at rest: that is a stop.
+    answered = (not run.ignored_command_types and rest_from is not None
+                and bool(np.any(run.commands.is_zero() & (run.commands.t >= t_req))))
+    if before < params.min_travel and not answered:
+        raise MetricError(
+            f"the robot drove only {before:.2f} m before Ctrl+C, so whether it stops on Ctrl+C cannot be seen"
+        )
     stop_at = after.t[-1] if rest_from is None else rest_from
     cmd = run.commands
     ended = run.run.ended_s

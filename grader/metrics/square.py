@@ -107,11 +107,14 @@ class Params(TrajectoryParams):
     """Square analysis settings; by default the odometry path, which is what an odometry-based node controls."""
 
     source: Literal["ground_truth", "odometry"] = "odometry"
-    side: float | None = None  # the side length asked for (m); None compares sides with their mean (timed squares)
+    side: float | None = None  # the side length asked for (m); None compares sides with their median (timed squares)
     corner_deg: float = 90.0
     turn_rate: float = 0.1  # rad/s above which the robot is turning
     min_corner_deg: float = 30.0  # smaller heading changes are steering corrections, not corners
     min_rest_s: float = 3.0  # standing still this long at the end counts as having stopped
+    side_tolerance_rel: float = 0.05  # a side within this share of ``side`` counts as right (side_share)
+    corner_tolerance_deg: float = 5.0  # a corner within this of ``corner_deg`` counts as right (corner_share)
+    min_sides: int = 4  # a square has four sides and three corners between them: shares count at least these
 
 
 def _stat(values: np.ndarray, how: str) -> float:
@@ -130,14 +133,24 @@ def measure(run: RunData, params: Params) -> Measurement:
         interrupted=shutdown is not None,
     )
     sides, corners = np.array(sq.sides), np.abs(np.array(sq.corners_deg))
-    ref_side = params.side if params.side is not None else (float(np.mean(sides)) if len(sides) else math.nan)
+    # A timed square has no side length: the median side is what the node meant, whatever one odd side measured.
+    ref_side = params.side if params.side is not None else (float(np.median(sides)) if len(sides) else math.nan)
     # A side never driven is wholly wrong, so fewer than four sides can never look like a good square.
-    side_err = float(np.max(np.abs(sides - ref_side))) if len(sides) >= 4 else ref_side
+    side_err = float(np.max(np.abs(sides - ref_side))) if len(sides) >= params.min_sides else ref_side
     corner_err = float(np.max(np.abs(corners - params.corner_deg))) if len(corners) else math.nan
+    # Credit by share: each side (corner) within tolerance earns its part, and a square driven only in part counts
+    # the sides (corners) it never drove as wrong, so one odd side costs its share, not the criterion.
+    sides_ok = int(np.sum(np.abs(sides - ref_side) <= params.side_tolerance_rel * ref_side))
+    corners_ok = int(np.sum(np.abs(corners - params.corner_deg) <= params.corner_tolerance_deg))
     others = float(np.median(sides[1:])) if len(sides) > 1 else math.nan
-    stopped = sq.rest_s is not None and sq.rest_s >= params.min_rest_s and shutdown is None
+    # At rest long enough by itself, before any Ctrl+C (the window ends there): it stopped by itself.
+    stopped = sq.rest_s is not None and sq.rest_s >= params.min_rest_s
     return {
         "n_sides": len(sides), "n_corners": len(corners),
+        "n_sides_ok": sides_ok, "n_sides_off": len(sides) - sides_ok,
+        "side_share": sides_ok / max(len(sides), params.min_sides),
+        "n_corners_ok": corners_ok, "n_corners_off": len(corners) - corners_ok,
+        "corner_share": corners_ok / max(len(corners), params.min_sides - 1),
         "side_mean": _stat(sides, "mean"), "side_min": _stat(sides, "min"),
         "side_max": _stat(sides, "max"), "side_worst_error": side_err,
         "corner_mean_deg": _stat(corners, "mean"), "corner_min_deg": _stat(corners, "min"),
@@ -158,7 +171,8 @@ METRIC = Metric(
     name="square",
     params=Params,
     quantities=frozenset({
-        "n_sides", "n_corners", "side_mean", "side_min", "side_max", "side_worst_error", "corner_mean_deg",
+        "n_sides", "n_corners", "n_sides_ok", "n_sides_off", "side_share", "n_corners_ok", "n_corners_off",
+        "corner_share", "side_mean", "side_min", "side_max", "side_worst_error", "corner_mean_deg",
         "corner_min_deg", "corner_max_deg", "corner_worst_error_deg", "closure_worst", "closure_first", "loops",
         "heading_loops", "loops_at_rest", "final_rest_s", "moving_at_end", "pauses", "shape_error", "side_error_rel",
         "corner_error_rel", "side_first", "side_first_ratio",

@@ -74,7 +74,7 @@ def test_a_plugin_metric_scores_like_a_built_in(tmp_path: Path) -> None:
     report = score_task(rubric, {"nominal": _run([0.0, 0.2, 0.5])})
     growth = report.criteria[0]
     assert growth.score == growth.max_score == 2
-    assert growth.measured == {"growth": 0.5, "turns": 2}
+    assert growth.measured == {"growth": 0.5, "turns": 2, "judged_until_s": 2.0, "judged_until_ctrl_c": False}
 
 
 def test_plugin_quantities_become_plain_values(tmp_path: Path) -> None:

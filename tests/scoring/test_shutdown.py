@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import replace
 
 import pytest
 from scoring_synth import run
@@ -53,9 +54,20 @@ def test_planned_shutdown_time_is_used_when_the_run_did_not_record_one() -> None
     assert m["rest_time"] == pytest.approx(0.0) and m["exited"] is False
 
 
-def test_robot_that_never_moved_proves_nothing() -> None:
+def test_robot_that_never_moved_and_heard_nothing_after_ctrl_c_proves_nothing() -> None:
     with pytest.raises(MetricError, match="before Ctrl\\+C"):
-        measure(run([(10.0, 0.0, 0.0)], shutdown_at=5.0), Params())
+        measure(run([(10.0, 0.0, 0.0)], command_segments=[(4.0, 0.0, 0.0)], shutdown_at=5.0), Params())
+
+
+def test_robot_at_rest_that_gets_a_zero_after_ctrl_c_has_stopped() -> None:
+    m = measure(run([(10.0, 0.0, 0.0)], shutdown_at=5.0), Params())
+    assert m["rest_time"] == 0.0 and m["zero_command_delay"] == 0.0 and m["moving_at_end"] is False
+
+
+def test_a_zero_the_base_ignores_is_no_stop_of_a_robot_that_never_moved() -> None:
+    data = replace(run([(10.0, 0.0, 0.0)], shutdown_at=5.0), ignored_command_types="geometry_msgs/Twist")
+    with pytest.raises(MetricError, match="before Ctrl\\+C"):
+        measure(data, Params())
 
 
 def test_run_info_from_json_metadata() -> None:
