@@ -18,7 +18,9 @@ from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
 from grader.rubric import Node, Rubric, load_rubrics
 from grader.rubricfile import RubricFile, load_rubric_files, stamp
 from grader.runtime import NodeSpec, RunSpec, ScriptNotFound, check_script, find_script
-from grader.runtime.client_library import ROS1, ROS2, client_library, entry_point, package_findings
+from grader.runtime.client_library import (
+    ROS1, ROS2, client_library, entry_point, import_roots, package_findings,
+)
 from grader.runtime.confine import detect, package_folder
 from grader.runtime.scripts import candidates
 from grader.runtime.parallel import Outcome, Run, run_all
@@ -29,6 +31,7 @@ from grader.submission import (
     STAGE_PREFIX, SubmissionError, claim, links_leaving, open_submission, remove_if_abandoned, unzip,
 )
 from grader.workers import fork_map
+from grader.workspace import Workspace, read_workspace
 
 __all__ = ["GradedSubmission", "SubmissionError", "grade_as_data", "grade_submission", "grade_task"]
 
@@ -68,16 +71,18 @@ def _present_tasks(folder: Path, rubrics: Mapping[str, Rubric]) -> list[str]:
                          in_folder(folder))
 
 
-def _node_spec(script: Path, node: Node) -> NodeSpec:
-    flavour = client_library(script)
+def _node_spec(script: Path, node: Node, workspace: Workspace) -> NodeSpec:
+    flavour = client_library(script, workspace)
+    roots = import_roots(script, workspace)
     if flavour == ROS2:
         # rclpy reads remaps after --ros-args (`ros2 run pkg exe --ros-args -r cmd_vel:=/x`)
         remaps = [part for name, target in node.remaps.items() for part in ("-r", f"{name}:={target}")]
         args = (*node.args, *(("--ros-args", *remaps) if remaps else ()))
         return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace,
-                        flavour=ROS2, entry=entry_point(script))
+                        flavour=ROS2, entry=entry_point(script, workspace), import_roots=roots)
     args = (*node.args, *(f"{name}:={target}" for name, target in node.remaps.items()))
-    return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace)
+    return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace,
+                    import_roots=roots)
 
 
 def _links_leaving(folder: Path, scripts: list[Path]) -> list[str]:
@@ -94,12 +99,13 @@ Started = tuple[tuple[NodeSpec, ...], list[str], list[Path]]  # node specs, find
 def _script_nodes(folder: Path, rubric: Rubric) -> Started:
     located = [_locate(folder, node, len(rubric.nodes) == 1) for node in rubric.nodes]
     findings: list[str] = []
-    nodes = tuple(_node_spec(script, node) for (script, _), node in zip(located, rubric.nodes))
+    workspace = read_workspace(folder)
+    nodes = tuple(_node_spec(script, node, workspace) for (script, _), node in zip(located, rubric.nodes))
     for (script, notes), spec in zip(located, nodes):
-        # rosrun's needs (shebang, execute bit) do not apply to `ros2 run`, which starts the entry point
+        # rosrun's needs (shebang, execute bit) are not `ros2 run`'s: package_findings says what it would trip over
         findings += notes + check_script(script, rosrun=spec.flavour == ROS1)
         if spec.flavour == ROS2:
-            findings += package_findings(script, spec.entry)
+            findings += package_findings(script, spec.entry, workspace)
     if len({spec.flavour for spec in nodes}) > 1:
         raise ScriptNotFound("the task's nodes mix rospy and rclpy scripts; ROS 1 and ROS 2 nodes cannot talk to "
                              "each other: write them all with one client library")

@@ -1,21 +1,30 @@
-"""Which client library a node script uses (rospy or rclpy), and how `ros2 run` would start an ament_python node.
+"""Which client library a node script uses (rospy or rclpy), how `ros2 run` would start it, and what it may import.
 
-A script that imports rclpy is a ROS 2 node, one that imports rospy (or neither) a ROS 1 node. A ROS 2 script inside
-an ament_python package (``package.xml`` + ``setup.py`` with ``console_scripts`` entry points, as ``ros2 pkg create
---build-type ament_python`` lays it out) is started through its entry point, as the wrapper that colcon installs
-does: the module is imported under its package name and its function's return value is the exit status. Nothing
-here runs the student's code: setup.py is read as a syntax tree.
+A script that imports rclpy is a ROS 2 node, one that imports rospy a ROS 1 node; a script that imports neither, or
+that does not parse (its import lines are then read as text), takes its package's (``package.xml``'s build type and
+dependencies), and a lone script is a ROS 1 node. A ROS 2 script inside an ament_python package is started through
+its console_scripts entry point, as the wrapper that colcon installs does; an ament_cmake script (COM2009's template:
+``scripts/`` installed with ``install(PROGRAMS ...)``) runs as the file. Either way the node may import the Python
+packages its workspace's build installs (``ament_python_install_package``, setup.py's packages). Everything about
+packages comes from the workspace model (``grader.workspace``), which reads the package files and never runs them.
 """
 from __future__ import annotations
 
 import ast
+import importlib.util
+import re
+import stat
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+from grader.nodelib import import_roots as client_roots
 from grader.runtime.scripts import read_script
+from grader.workspace import Package, Workspace, read_workspace
 
 ROS1, ROS2 = "ros1", "ros2"
-_SETUP_MAX_BYTES = 256 * 1024
+MAX_IMPORT_ROOTS = 16  # folders a node gets on its import path from the workspace; a course workspace needs 1-3
+_TEXT_IMPORT = re.compile(r"^[ \t]*(?:import[ \t]+([\w.]+(?:[ \t]*,[ \t]*[\w.]+)*)|from[ \t]+(\w+))", re.M)
 
 
 @dataclass(frozen=True)
@@ -29,96 +38,168 @@ class EntryPoint:
     root: Path  # the folder to put on sys.path so that ``module`` imports (the package's own folder)
 
 
-def _imports(source: str) -> list[str]:
-    """Top-level module names the script imports, in source order (empty if it does not parse)."""
+def _import_pairs(source: str) -> list[tuple[str, str]] | None:
+    """(top-level module, next part or "") of every import, in source order; None when the script does not parse."""
     try:
         tree = ast.parse(source)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
-        return []
+        return None
     names: list[str] = []
     for node in ast.walk(tree):
         if isinstance(node, ast.Import):
-            names += [alias.name.split(".")[0] for alias in node.names]
+            names += [alias.name for alias in node.names]
         elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
-            names.append(node.module.split(".")[0])
+            names.append(node.module)
+    return [(parts[0], parts[1] if len(parts) > 1 else "") for parts in (name.split(".") for name in names)]
+
+
+def _text_imports(source: str) -> list[str]:
+    """Top-level names on the script's import lines, read as text (for a script Python cannot parse)."""
+    names: list[str] = []
+    for match in _TEXT_IMPORT.finditer(source):
+        listed = match.group(1).split(",") if match.group(1) else [match.group(2)]
+        names += [item.strip().split(".")[0] for item in listed]
     return names
 
 
-def client_library(script: Path) -> str:
-    """ROS2 when the script imports rclpy, else ROS1 (rospy, or a script that imports neither)."""
+def _workspace(script: Path, workspace: Workspace | None) -> Workspace:
+    return workspace if workspace is not None else read_workspace(script)
+
+
+def _package_library(package: Package | None) -> str | None:
+    """The client library a package's files say its nodes use, or None when they do not say."""
+    if package is None:
+        return None
+    if package.build_type != "catkin" or ("rclpy" in package.depends and "rospy" not in package.depends):
+        return ROS2
+    return ROS1
+
+
+def client_library(script: Path, workspace: Workspace | None = None) -> str:
+    """ROS2 for an rclpy script, ROS1 for a rospy one; otherwise its package's library (ROS1 for a lone script)."""
     raw = read_script(script)
     if isinstance(raw, str):
         return ROS1
-    imports = _imports(raw.decode("utf-8", "replace"))
-    return ROS2 if "rclpy" in imports else ROS1
+    source = raw.decode("utf-8", "replace")
+    pairs = _import_pairs(source)
+    imports = [top for top, _ in pairs] if pairs is not None else _text_imports(source)
+    if "rclpy" in imports:
+        return ROS2
+    if "rospy" in imports:
+        return ROS1
+    return _package_library(_workspace(script, workspace).enclosing(script)) or ROS1
 
 
-def _package_root(script: Path) -> Path | None:
-    """The nearest folder above the script holding both setup.py and package.xml."""
-    for folder in script.resolve().parents:
-        if (folder / "setup.py").is_file() and (folder / "package.xml").is_file():
-            return folder
-    return None
-
-
-def _console_scripts(setup: Path) -> list[str]:
-    """The ``console_scripts`` strings of setup.py's ``setup(entry_points=...)``, read without running it."""
-    raw = read_script(setup)
-    if isinstance(raw, str) or len(raw) > _SETUP_MAX_BYTES:
-        return []
-    try:
-        tree = ast.parse(raw.decode("utf-8", "replace"))
-    except (SyntaxError, ValueError, RecursionError, MemoryError):
-        return []
-    found: list[str] = []
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Dict):
-            for key, value in zip(node.keys, node.values):
-                if isinstance(key, ast.Constant) and key.value == "console_scripts" \
-                        and isinstance(value, (ast.List, ast.Tuple)):
-                    found += [e.value for e in value.elts if isinstance(e, ast.Constant) and isinstance(e.value, str)]
-    return found
-
-
-def _package_name(root: Path, setup: Path) -> str:
-    """setup.py's ``package_name = '...'`` (the template's spelling), else the folder's name."""
-    raw = read_script(setup)
-    if not isinstance(raw, str):
-        try:
-            for node in ast.parse(raw.decode("utf-8", "replace")).body:
-                if isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "package_name"
-                                                        for t in node.targets) \
-                        and isinstance(node.value, ast.Constant) and isinstance(node.value.value, str):
-                    return node.value.value
-        except (SyntaxError, ValueError, RecursionError, MemoryError):
-            pass
-    return root.name
-
-
-def entry_point(script: Path) -> EntryPoint | None:
+def entry_point(script: Path, workspace: Workspace | None = None) -> EntryPoint | None:
     """The console_scripts entry point that runs ``script``'s module, when the script is in an ament_python package."""
-    root = _package_root(script)
-    if root is None:
+    package = _workspace(script, workspace).enclosing(script)
+    if package is None or package.build_type != "ament_python":
         return None
+    found = package.executable_for(script)
+    if found is None or found.entry is None:
+        return None
+    module, _, function = found.entry.partition(":")
+    return EntryPoint(package.setup_package_name or package.folder.name, found.name, module, function,
+                      package.folder)
+
+
+def import_roots(script: Path, workspace: Workspace | None = None) -> tuple[Path, ...]:
+    """The folders to put on the node's import path so that it imports the Python packages the workspace's build
+    installs (its own package's first), as a sourced colcon or catkin workspace would."""
+    ws = _workspace(script, workspace)
+    own = ws.enclosing(script)
+    items = list(own.python_packages if own else ()) + ws.python_packages()
+    roots = dict.fromkeys(item.root.resolve() for item in items)
+    return tuple(roots)[:MAX_IMPORT_ROOTS]
+
+
+def _relative(script: Path, package: Package) -> str:
     try:
-        module = ".".join(script.resolve().relative_to(root).with_suffix("").parts)
+        return script.resolve().relative_to(package.folder.resolve()).as_posix()
     except ValueError:
-        return None
-    setup = root / "setup.py"
-    for spec in _console_scripts(setup):
-        name, sep, target = spec.partition("=")
-        target_module, colon, function = target.strip().partition(":")
-        if sep and colon and target_module.strip() == module:
-            return EntryPoint(_package_name(root, setup), name.strip(), module, function.strip(), root)
-    return None
+        return script.name
 
 
-def package_findings(script: Path, entry: EntryPoint | None) -> list[str]:
-    """What `colcon build` and `ros2 run` would trip over for a ROS 2 script, each with the fix."""
-    root = _package_root(script)
-    if root is None or entry is not None:
+def _ament_python_findings(script: Path, package: Package, entry: EntryPoint | None) -> list[str]:
+    if entry is not None:
         return []
-    module = ".".join(script.resolve().relative_to(root).with_suffix("").parts)
-    return [f"{script.name} is in the ament_python package {root.name}, but setup.py has no console_scripts entry "
-            f"point for {module}, so `ros2 run` would say 'No executable found'. Add "
+    module = ".".join(Path(_relative(script, package)).with_suffix("").parts)
+    return [f"{script.name} is in the ament_python package {package.folder.name}, but setup.py has no console_scripts "
+            f"entry point for {module}, so `ros2 run` would say 'No executable found'. Add "
             f"'{script.stem} = {module}:main' to entry_points in setup.py (it was graded by running the file)."]
+
+
+def _ament_cmake_findings(script: Path, package: Package) -> list[str]:
+    """What `ros2 run <package> <script>.py` would trip over after `colcon build --symlink-install` (COM2009's)."""
+    rel = _relative(script, package)
+    run = f"`ros2 run {package.name} {script.name}`"
+    installed = package.executable_for(script)
+    if installed is None:
+        return [f"{rel} is not installed by CMakeLists.txt, so {run} would say 'No executable found'. Add {rel} to "
+                "install(PROGRAMS ... DESTINATION lib/${PROJECT_NAME}) in CMakeLists.txt (it was graded by running "
+                "the file)."]
+    raw = read_script(script)
+    notes: list[str] = []
+    first_line = raw.split(b"\n", 1)[0] if isinstance(raw, bytes) else b"#!"
+    if not first_line.startswith(b"#!"):
+        notes.append(f"{rel} has no shebang line: {run} would fail with 'Exec format error'. Make "
+                     "`#!/usr/bin/env python3` the very first line.")
+    elif first_line.endswith(b"\r"):
+        notes.append(f"{rel} has Windows (CRLF) line endings: {run} would fail with \"/usr/bin/env: 'python3\\r': No "
+                     "such file or directory\". Save it with LF line endings.")
+    if not installed.executable_install:
+        notes.append(f"CMakeLists.txt installs {rel} as a plain file, so {run} would say 'No executable found'. "
+                     "Install it with install(PROGRAMS ...) instead.")
+    elif not script.stat().st_mode & (stat.S_IXUSR | stat.S_IXGRP | stat.S_IXOTH):
+        notes.append(f"{rel} is not executable: built with `colcon build --symlink-install`, {run} would say 'No "
+                     f"executable found'. Run `chmod +x {rel}`.")
+    return notes
+
+
+def _importable(name: str, script: Path) -> bool:
+    """Whether ``import name`` finds something without the workspace's packages (beside the script, the standard
+    library, the client library, the interpreter's site-packages)."""
+    places = [script.parent, *client_roots(ROS2)]
+    if any((place / name).is_dir() or (place / f"{name}.py").is_file() for place in places):
+        return True
+    try:
+        return name in sys.stdlib_module_names or importlib.util.find_spec(name) is not None
+    except (ImportError, ValueError):
+        return False
+
+
+def _import_findings(script: Path, ws: Workspace) -> list[str]:
+    """A module the build does not install, or a wrong package name in an import, as `ros2 run` would meet it."""
+    raw = read_script(script)
+    pairs = _import_pairs(raw.decode("utf-8", "replace")) if isinstance(raw, bytes) else None
+    installed = {item.name: item for item in ws.python_packages()}
+    notes: list[str] = []
+    for top, sub in dict.fromkeys(pairs or ()):
+        item = installed.get(top)
+        if item is not None and not item.declared:
+            notes.append(f"{script.name} imports {top}, but CMakeLists.txt does not install it, so `ros2 run` would "
+                         f"stop with \"ModuleNotFoundError: No module named '{top}'\". Add "
+                         f"`ament_python_install_package({top})` to CMakeLists.txt (it was graded as if it did).")
+        elif item is None and not _importable(top, script):
+            near = [name for name, other in installed.items()
+                    if (sub and ((other.folder / sub).is_dir() or (other.folder / f"{sub}.py").is_file()))
+                    or (top.endswith("_modules") and name.endswith("_modules"))]
+            if near:
+                notes.append(f"{script.name} imports {top}, which no package of the submission installs: the node "
+                             f"stops with \"ModuleNotFoundError: No module named '{top}'\". Your workspace installs "
+                             f"{near[0]}: import from {near[0]}{'.' + sub if sub else ''} instead.")
+    return notes
+
+
+def package_findings(script: Path, entry: EntryPoint | None, workspace: Workspace | None = None) -> list[str]:
+    """What `colcon build` and `ros2 run` would trip over for a ROS 2 script, each with the fix."""
+    ws = _workspace(script, workspace)
+    package = ws.enclosing(script)
+    if package is None:
+        return []
+    notes = list(package.findings) if package.build_type != "catkin" else []
+    if package.build_type == "ament_python":
+        notes += _ament_python_findings(script, package, entry)
+    elif package.build_type == "ament_cmake":
+        notes += _ament_cmake_findings(script, package)
+    return notes + _import_findings(script, ws)

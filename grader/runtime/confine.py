@@ -24,6 +24,7 @@ import stat
 import subprocess
 import sys
 import threading
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -387,20 +388,36 @@ def _shown_package(cap: Capability, script: Path, workdir: Path) -> tuple[Path, 
     return package, staged
 
 
-def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int) -> Plan:
+def _shown_imports(cap: Capability, script: Path, workdir: Path, roots: Sequence[Path]) -> list[tuple[str, str]]:
+    """(host folder, path inside) for the node's import roots that its own package does not already show."""
+    package = str(package_folder(script)) + "/"
+    pairs = []
+    for index, root in enumerate(roots):
+        if (str(root) + "/").startswith(package) or (str(root) + "/").startswith(NODELIB + "/"):
+            continue
+        staged = None if not cap.root or tree_readable(root) else readable_copy(root, workdir / f"import{index}")
+        pairs.append((str(staged or root), str(root)))
+    return pairs
+
+
+def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int, imports: Sequence[Path] = ()) -> Plan:
     """How to start `command` (arguments to this interpreter, running `script`) confined; workdir is the node's
-    host folder. Raises ConfineError rather than run the node as root."""
+    host folder; `imports` are folders of the workspace the node imports from, shown read-only beside its package.
+    Raises ConfineError rather than run the node as root."""
     cap = detect()
     notes = [cap.note] if cap.note else []
     if cap.namespaces:
         shown = _shown_package(cap, script, workdir)
         staged = shown[1] if shown else None
+        extra = _shown_imports(cap, script, workdir, imports)
         uid = next_uid() if cap.root else None
         tmp_bytes = max(1, limits_file_mb) << 20
         if cap.bwrap:
             args = [cap.bwrap, *base_args(cap.root), "--size", str(tmp_bytes), "--perms", "1777",
                     "--tmpfs", SANDBOX_HOME, *system_binds()]
             _ro_bind(args, NODELIB)
+            for source, target in extra:  # before the package, which may lie inside one of them
+                _ro_bind(args, source, target)
             if shown:
                 _ro_bind(args, str(staged or shown[0]), str(shown[0]))
             # Nothing but its /tmp and /dev/shm is writable (unprivileged, the sandbox's root is a tmpfs of its own).
@@ -409,7 +426,7 @@ def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int) -
                 args += _drop_argv(uid)
             argv = args + [sys.executable, *command]
         else:
-            pairs = [(str(staged or shown[0]), str(shown[0]))] if shown else []
+            pairs = extra + ([(str(staged or shown[0]), str(shown[0]))] if shown else [])
             argv = unshare_argv(cap.unshare, cap.root, uid, pairs, tmp_bytes, command)
         return Plan(argv, cwd=str(workdir), home=SANDBOX_HOME, uid=uid, sandboxed=True, notes=notes, staged=staged,
                     isolation=cap.isolation)

@@ -48,7 +48,7 @@ def node_environment(spec: NodeSpec, channel: str, home: Path | str) -> dict[str
     env.update(
         HOME=str(home),
         TMPDIR=str(home),
-        PYTHONPATH=pythonpath(spec.flavour),
+        PYTHONPATH=os.pathsep.join([pythonpath(spec.flavour), *map(str, spec.import_roots)]),
         PYTHONDONTWRITEBYTECODE="1",
         PYTHONNOUSERSITE="1",
         # Set iteration order (and so anything a node prints from a set) must not vary between runs.
@@ -148,7 +148,7 @@ class NodeProcess:
         script = Path(os.path.abspath(spec.script))
         try:
             self.plan = confine.plan(["-B", *_start_command(spec, script), *spec.args], script, workdir,
-                                     limits.file_mb)
+                                     limits.file_mb, spec.import_roots)
         except confine.ConfineError as exc:
             raise ProcessError(str(exc)) from None
         except OSError as exc:

@@ -56,6 +56,9 @@ class NodeSpec:
     flavour: Literal["ros1", "ros2"] = "ros1"
     # An ament_python node is started through this console_scripts entry point, as `ros2 run` would.
     entry: EntryPoint | None = None
+    # Folders holding the Python packages its workspace's build installs (ament_python_install_package, setup.py's
+    # packages): on the node's import path after the client library, shown read-only in its sandbox.
+    import_roots: tuple[Path, ...] = ()
 
 
 @dataclass(frozen=True)
