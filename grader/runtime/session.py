@@ -92,7 +92,8 @@ class _Node:
     outcome: NodeOutcome
     alive: bool = True
     wake_ns: int | None = None
-    deliveries: list[tuple[int, bytes]] = field(default_factory=list)
+    # (handle, bytes) from the world; (handle, bytes, (callerid, latched)) from a node (rosgrade_channel.encode_batch)
+    deliveries: list[tuple] = field(default_factory=list)
     # The connection count per topic handle the node was last told (what its get_num_connections() returns).
     told_connections: dict[int, int] = field(default_factory=dict)
     term_ns: int | None = None
@@ -722,14 +723,14 @@ class Session:
         node.told_connections.update(changes)
         return changes
 
-    def _route(self, publisher: Endpoint, data: bytes, t: int) -> None:
+    def _route(self, node: _Node, publisher: Endpoint, data: bytes, t: int) -> None:
         """Hand a node's publication to everything connected to its publisher at t."""
         for key in self._receivers(publisher, t):
-            self._hand_over(key, publisher, data, t)
+            self._hand_over(key, node, publisher, data, t)
             if publisher.latched is not None:
                 publisher.latched.receivers.add(key)
 
-    def _hand_over(self, key, publisher: Endpoint, data: bytes, t: int) -> None:
+    def _hand_over(self, key, node: _Node, publisher: Endpoint, data: bytes, t: int) -> None:
         if key == ROBOT:
             if self._ahead is not None:  # the command in force, repeated (see _inert_publishers)
                 self._ahead.renewed_ns = t
@@ -740,7 +741,7 @@ class Session:
             self.received[publisher.topic] = self.received.get(publisher.topic, 0) + 1
         else:
             index, ident = key
-            self.nodes[index].deliveries.append((ident, data))
+            self.nodes[index].deliveries.append((ident, data, (node.callerid, publisher.latch)))
             self.nodes[index].link.state.subscribers[ident].count += 1
 
     def _replay_latched(self, t: int) -> None:
@@ -760,7 +761,7 @@ class Session:
                 for key in self._receivers(pub, t):
                     if key not in held.receivers:
                         held.receivers.add(key)
-                        self._hand_over(key, pub, held.data, t)
+                        self._hand_over(key, node, pub, held.data, t)
 
     def _latched_connect_times(self, t: int) -> list[int]:
         """Future times at which a held latched message goes out (its publisher connects)."""
@@ -791,7 +792,7 @@ class Session:
             return
         self._recorder.write(endpoint.topic, endpoint.type, data, t, callerid=node.callerid, latching=endpoint.latch,
                              origin="node")
-        self._route(endpoint, data, t)
+        self._route(node, endpoint, data, t)
 
     def _ignored(self, publisher: Endpoint) -> bool:
         """Whether a node's publisher is on a topic only the world or the grader publish (its messages are ignored)."""

@@ -10,7 +10,7 @@ import os
 import re
 import struct
 
-PROTOCOL = 6
+PROTOCOL = 7
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000
@@ -104,14 +104,21 @@ def encode_batch(header: dict, deliveries: list[tuple[int, bytes]]) -> bytes:
     world has run ahead: the node may also run its own wake-ups up to it. ``inert`` names the publishers whose
     messages cannot change the world before then (``"any"``), or only when they repeat the publisher's last
     message (``"same"``): publishing on them, logging and printing do not end the node's run on its own.
+
+    A delivery may be ``(handle, bytes, (callerid, latched))``: a node's publication, sent with the publishing
+    node's name and whether its publisher latches (rospy keeps one connection per publisher); the header's
+    ``from`` lists them as ``[delivery index, callerid, latched]``. The others are the world's.
     """
+    sources = [[i, item[2][0], item[2][1]] for i, item in enumerate(deliveries) if len(item) > 2]
+    if sources:
+        header = {**header, "from": sources}
     t_ns, clock_ns = header.get("t_ns"), header.get("clock_ns")
     if len(header) == 2 and type(t_ns) is int and type(clock_ns) is int and t_ns >= 0 and clock_ns >= 0:
         head = b'{"t_ns":%d,"clock_ns":%d}' % (t_ns, clock_ns)
     else:
         head = json.dumps(header, separators=(",", ":")).encode()
     parts = [_ID.pack(len(head)), head]
-    for ident, data in deliveries:
+    for ident, data, *_ in deliveries:
         parts += (_ID_LEN.pack(ident, len(data)), data)
     return encode(BATCH, b"".join(parts))
 
@@ -128,8 +135,9 @@ def split_moment(payload: bytes) -> int:
     return _TIME.unpack(payload)[0]
 
 
-def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:
-    """The header object and the (topic handle, message bytes) deliveries of a BATCH payload."""
+def decode_batch(payload: bytes) -> tuple[dict, list[tuple]]:
+    """The header object and the (topic handle, message bytes) deliveries of a BATCH payload; a node's publication
+    comes as (topic handle, message bytes, (callerid, latched)) (see encode_batch)."""
     if len(payload) < 4:
         raise ChannelError("BATCH frame shorter than its header length")
     end = 4 + _ID.unpack_from(payload)[0]
@@ -150,6 +158,12 @@ def decode_batch(payload: bytes) -> tuple[dict, list[tuple[int, bytes]]]:
         if end > len(payload):
             raise ChannelError("BATCH delivery runs past the end of the frame")
         deliveries.append((ident, payload[end - size:end]))
+    for source in header.pop("from", None) or ():
+        if not (isinstance(source, list) and len(source) == 3 and type(source[0]) is int
+                and 0 <= source[0] < len(deliveries) and isinstance(source[1], str) and type(source[2]) is bool):
+            raise ChannelError("BATCH from must list [delivery index, callerid, latched] triples")
+        index, callerid, latched = source
+        deliveries[index] = (*deliveries[index][:2], (callerid, latched))
     return header, deliveries
 
 

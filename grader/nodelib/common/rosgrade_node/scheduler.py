@@ -85,7 +85,7 @@ class Scheduler:
         self._threads: dict[int, _Waiter] = {self._main.ident: self._main}
         self._blocked: dict[_Waiter, None] = {}
         self._runnable: deque[_Waiter] = deque()
-        self._sinks: dict[int, Callable[[bytes], _Waiter | None]] = {}
+        self._sinks: dict[int, tuple[Callable[..., _Waiter | None], bool]] = {}
         # Topic handle -> how many nodes it is connected to, as the grader last said (get_num_connections()).
         self.connections: dict[int, int] = {}
         # The run's parameter server as this node sees it (bootstrap fills it from START; batches bring the changes
@@ -226,9 +226,10 @@ class Scheduler:
         finally:
             self._exit(waiter)
 
-    def add_sink(self, ident: int, sink: Callable[[bytes], _Waiter | None]) -> None:
-        """Route deliveries (in BATCH frames) for handle ``ident``; the sink returns the thread that will consume the message."""
-        self._sinks[ident] = sink
+    def add_sink(self, ident: int, sink: Callable[..., _Waiter | None], sources: bool = False) -> None:
+        """Route deliveries (in BATCH frames) for handle ``ident``; the sink returns the thread that will consume the
+        message. With ``sources`` it is also given who published it: ``(callerid, latched)``, or None for the world."""
+        self._sinks[ident] = (sink, sources)
 
     def remove_sink(self, ident: int) -> None:
         self._sinks.pop(ident, None)
@@ -310,7 +311,7 @@ class Scheduler:
             self.link.begin_moments(batch.t_ns, batch.inert)
         self._apply(batch.t_ns, batch.clock_ns, batch.deliveries, batch.shutdown)
 
-    def _apply(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None) -> None:
+    def _apply(self, t_ns: int, clock_ns: int, deliveries: list[tuple], shutdown: str | None) -> None:
         """Move to world time ``t_ns``, hand the deliveries to their topics and queue the threads they wake."""
         if t_ns < self.world_ns:
             raise SchedulerError(f"grader moved world time backwards: {t_ns} < {self.world_ns}")
@@ -318,9 +319,11 @@ class Scheduler:
             self.charge_ns = 0
         self.world_ns, self.clock_ns = t_ns, clock_ns
         woken: dict[_Waiter, None] = {}
-        for ident, data in deliveries:
-            sink = self._sinks.get(ident)
-            consumer = sink(data) if sink is not None else None
+        for ident, data, *source in deliveries:
+            sink, sources = self._sinks.get(ident, (None, False))
+            if sink is None:
+                continue
+            consumer = sink(data, source[0] if source else None) if sources else sink(data)
             if consumer is not None:
                 woken[consumer] = None
         if shutdown is not None:

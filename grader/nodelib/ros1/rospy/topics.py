@@ -121,10 +121,15 @@ class Publisher(Topic):
         return self.impl.num_connections() if self.impl is not None else 0
 
     def unregister(self) -> None:
-        """Close the handle; further calls have no effect."""
+        """Close the handle; further calls have no effect. The node's own subscription loses its connection from
+        this node once no publisher of it on the topic is left."""
         if self.impl is not None:
             self.impl.close()
             self.impl = None
+            own = _sub_impls.get(self.resolved_name)
+            if own is not None and not any(reg.reg_type == "pub" and reg.resolved_name == self.resolved_name
+                                           for reg in _open.values()):
+                own.drop_connection(names.get_caller_id())
 
     def publish(self, *args, **kwds) -> None:
         """Publish a message, or build one from ``args``/``kwds``; silently dropped after shutdown."""
@@ -148,8 +153,8 @@ class Publisher(Topic):
 
 
 class Subscriber(Topic):
-    """A callback on a topic; every Subscriber on one topic in a node shares that topic's connection (its
-    ``_SubscriberImpl``): one queue, one message class, one thread that calls the callbacks in turn."""
+    """A callback on a topic; every Subscriber on one topic in a node shares that topic's ``_SubscriberImpl``: its
+    message class and its connections, one per publisher, each with its own queue and thread."""
 
     def __init__(self, name, data_class, callback=None, callback_args=None, queue_size=None, buff_size=65536,
                  tcp_nodelay=False) -> None:
@@ -182,31 +187,35 @@ class Subscriber(Topic):
 
 
 class _SubscriberImpl(_Registration):
-    """The node's connection to one topic: registered while any Subscriber uses it. The first subscriber's class
-    decodes the messages; the last queue_size given wins (as in rospy)."""
+    """The node's subscription to one topic: registered while any Subscriber uses it. The first subscriber's class
+    decodes the messages; the last queue_size given wins for connections made after it (as in rospy)."""
 
     reg_type = "sub"
 
     def __init__(self, resolved_name: str, data_class: type) -> None:
         super().__init__(resolved_name, data_class)
         self.subscribers: list[Subscriber] = []
-        self.queue: deque[bytes] = deque()
-        self.waiter = runtime.scheduler.spawn(resolved_name, self._run, ready=self._has_messages)
+        self.connections: dict[str, _Connection] = {}
 
     def acquire(self, sub: Subscriber) -> None:
+        """Add a subscriber; like rospy's add_callback, it gets each latched connection's last message at once, in
+        the caller's thread."""
         if not self.subscribers:
             if self.announced or self in _pending:
                 self.close()
             self.handle = next(_handle_ids)
             self.data_class = sub.data_class
             self.queue_size = None
-            runtime.scheduler.add_sink(self.handle, self._push)
+            runtime.scheduler.add_sink(self.handle, self._push, sources=True)
             self.subscribers.append(sub)
             self._set_queue_size(sub.queue_size)
             self.register()
             return
-        self.subscribers.append(sub)
         self._set_queue_size(sub.queue_size)
+        self.subscribers.append(sub)
+        for connection in list(self.connections.values()):
+            if connection.latch is not None:
+                _invoke_callback(sub, connection.latch)
 
     def _set_queue_size(self, queue_size: int | None) -> None:
         if queue_size is not None:
@@ -220,41 +229,76 @@ class _SubscriberImpl(_Registration):
 
     def close(self) -> None:
         runtime.scheduler.remove_sink(self.handle)
-        self.queue.clear()
+        for connection in self.connections.values():
+            connection.closed = True
+        self.connections = {}
         super().close()
 
-    def _has_messages(self) -> bool:
-        return bool(self.queue)
+    def drop_connection(self, callerid: str) -> None:
+        """The publisher of ``callerid`` is gone: its connection's thread ends and its latched message with it."""
+        connection = self.connections.pop(callerid, None)
+        if connection is not None:
+            connection.closed = True
 
-    def _push(self, data: bytes):
-        """Queue a delivered message, dropping the oldest beyond queue_size."""
-        self.queue.append(data)
-        if self.queue_size is not None:
-            while len(self.queue) > self.queue_size:
-                self.queue.popleft()
-        return self.waiter
+    def _push(self, data: bytes, source: tuple[str, bool] | None):
+        """A delivered message arrives on its publisher's connection, made when the first one arrives."""
+        callerid, latched = source or (_PUBLISHER_CALLERID, False)
+        connection = self.connections.get(callerid)
+        if connection is None:
+            connection = self.connections[callerid] = _Connection(self, callerid, latched)
+        connection.pending.append(data)
+        return connection.waiter
 
-    def _run(self) -> None:
-        while True:
-            while self.queue:
-                self._dispatch(self.queue.popleft())
-            runtime.scheduler.block(ready=self._has_messages)
-
-    def _dispatch(self, data: bytes) -> None:
-        """Deserialize once and call each subscriber's callback; rospy's receive loop swallows anything that gets
-        past its per-callback ``except Exception`` (sys.exit() in a callback) and reads on."""
-        if core._shutdown_flag or not self.subscribers:
-            return
-        msg = self.data_class()
-        msg.deserialize(data)
-        msg._connection_header = {"callerid": _PUBLISHER_CALLERID, "md5sum": self.data_class._md5sum,
-                                  "topic": self.resolved_name, "type": self.data_class._type,
-                                  "message_definition": self.data_class._full_text, "latching": "0"}
+    def receive(self, msgs: list) -> None:
+        """rospy's receive_callback: the callbacks registered when a read ends are called for each message read;
+        its receive loop swallows anything that gets past the per-callback ``except Exception`` (sys.exit() in a
+        callback) and reads on."""
+        subscribers = list(self.subscribers)
         try:
-            for sub in list(self.subscribers):
-                _invoke_callback(sub, msg)
+            for msg in msgs:
+                for sub in subscribers:
+                    _invoke_callback(sub, msg)
         except BaseException:  # noqa: BLE001 - what rospy's receive loop does
             pass
+
+
+class _Connection:
+    """One publisher's connection to a subscription (rospy's TCPROSSub): its own thread, named after the topic, reads
+    everything received since its last read, keeps the last ``queue_size`` (fixed when the connection was made) and
+    runs the callbacks on them; a latched connection keeps the last message it read for later subscribers."""
+
+    def __init__(self, impl: _SubscriberImpl, callerid: str, latched: bool) -> None:
+        self.impl = impl
+        self.queue_size = impl.queue_size
+        self.header = {"callerid": callerid, "md5sum": impl.data_class._md5sum, "topic": impl.resolved_name,
+                       "type": impl.data_class._type, "message_definition": impl.data_class._full_text,
+                       "latching": "1" if latched else "0"}
+        self.latched = latched
+        self.latch = None
+        self.pending: list[bytes] = []  # received, not read yet (rospy's socket buffer)
+        self.closed = False
+        self.waiter = runtime.scheduler.spawn(impl.resolved_name, self._run, ready=self._readable)
+
+    def _readable(self) -> bool:
+        return bool(self.pending) or self.closed
+
+    def _run(self) -> None:
+        while not self.closed:
+            buffers, self.pending = self.pending, []
+            if self.queue_size is not None:
+                buffers = buffers[-self.queue_size:]
+            if buffers and not core._shutdown_flag:
+                msgs = [self._message(data) for data in buffers]
+                if self.latched:
+                    self.latch = msgs[-1]
+                self.impl.receive(msgs)
+            runtime.scheduler.block(ready=self._readable)
+
+    def _message(self, data: bytes):
+        msg = self.impl.data_class()
+        msg.deserialize(data)
+        msg._connection_header = self.header
+        return msg
 
 
 def _invoke_callback(sub: Subscriber, msg) -> None:
