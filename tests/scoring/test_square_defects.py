@@ -4,6 +4,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
+import pytest
 from scoring_synth import Segment, run, square_segments
 
 from grader.metrics import RunData, RunInfo
@@ -38,13 +39,13 @@ def _criterion(rubric: Rubric, runs: dict[str, RunData], criterion: str):
     return next(c for c in score_task(rubric, runs).criteria if c.id == criterion)
 
 
-def test_two_sides_then_spinning_earn_no_side_credit() -> None:
+def test_two_sides_then_spinning_earn_only_the_share_of_two_sides_in_four() -> None:
     # The yaw-wrap bug: two good sides, then spinning on the spot at the second corner until the run ends.
     segs = square_segments(loops=1)[:3] + [(140.0, 0.0, 0.5)]
     m = measure(run(segs), Params(side=1.0))
-    assert m["n_sides"] == 2 and m["side_worst_error"] == 1.0
+    assert m["n_sides"] == 2 and m["side_worst_error"] == 1.0 and m["side_share"] == 0.5
     side = _criterion(RUBRICS["move_square"], _runs(RUBRICS["move_square"], segs, rest_after=False), "side_length")
-    assert side.score == 0.0
+    assert side.score == side.max_score / 2
     assert "Only 2 sides were driven" in side.feedback
 
 
@@ -67,12 +68,14 @@ def test_timed_square_that_starts_with_a_turn_scores_full_marks() -> None:
     assert "Time.now" not in shape.feedback
 
 
-def test_square_with_good_corners_and_one_short_side_keeps_the_corners_half() -> None:
+def test_square_with_good_corners_and_one_short_side_loses_only_that_sides_share() -> None:
     rubric = RUBRICS["mover_timed_square"]
     segs = square_segments(loops=4)
     segs[4] = (0.5 / 0.2, 0.2, 0.0)  # the third side is 0.5 m, the corners are all 90 degrees
     shape = _criterion(rubric, _runs(rubric, segs), "square_shape")
-    assert shape.score == shape.max_score / 2
+    n = shape.measured["n_sides"]
+    assert shape.measured["n_sides_off"] == 1
+    assert shape.score == pytest.approx(shape.max_score * (1 + (n - 1) / n) / 2)
     assert "Time.now" not in shape.feedback  # the short side is not the first one
 
 
