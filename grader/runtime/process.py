@@ -143,6 +143,8 @@ class NodeProcess:
         self.marker = marker_prefix() + secrets.token_hex(8)
         precompile()
         self.peak_tasks = 0  # processes + threads seen in the node's sandbox when it was killed
+        self.hit_process_limit = False  # whether the node was ever seen unable to start another process or thread
+        self._at_process_limit = False  # at the last check
         self._init: tuple[int, int | None] | None = None  # the sandbox's init: (pid, start tick), see _sandbox_init
         workdir.mkdir(parents=True, exist_ok=True)
         script = Path(os.path.abspath(spec.script))
@@ -154,10 +156,13 @@ class NodeProcess:
         except OSError as exc:
             raise ProcessError(f"could not prepare the sandbox for {script.name}: {exc}") from None
         self.notes = list(self.plan.notes)
+        # RLIMIT_NPROC counts a uid's tasks. Under the grader's own (unprivileged) uid the node's ceiling is what the
+        # user's other tasks leave of it, which moves as they come and go: it is checked against that total.
+        self._shared_nproc: int | None = None
         if self.plan.uid is not None or (self.plan.sandboxed and os.geteuid() == 0):
             nproc: int | None = limits.processes  # the node's own uid: the count is the node's alone
         elif hasattr(os, "getuid") and sys.platform.startswith("linux") and os.getuid() != 0:
-            nproc = _own_process_count() + limits.processes
+            nproc = self._shared_nproc = _own_process_count() + limits.processes
         else:
             nproc = None
         node_to_grader_r, node_to_grader_w = os.pipe()
@@ -312,10 +317,22 @@ class NodeProcess:
         tasks = sum(int(confine.status_fields(pid).get("Threads", "1") or 1) for pid in pids)
         return Usage(memory, sum(confine.cpu_seconds(pid) for pid in pids), tasks)
 
+    def _note_tasks(self, tasks: int) -> bool:
+        """Record the node's task count; whether it is at its process limit, where forks fail."""
+        self.peak_tasks = max(self.peak_tasks, tasks)
+        at_limit = tasks >= self.limits.processes - 1
+        # The user-wide count is a /proc scan: made only once the node holds half its budget, which no node that
+        # starts a thread or two comes near.
+        if not at_limit and self._shared_nproc is not None and tasks >= self.limits.processes // 2:
+            at_limit = _own_process_count() >= self._shared_nproc - 1
+        self.hit_process_limit = self.hit_process_limit or at_limit
+        return at_limit
+
     def over_limit(self) -> str | None:
         """Why the node as a whole (every process it started) is over its limits, or None."""
         usage = self.usage()
-        self.peak_tasks = max(self.peak_tasks, usage.tasks)
+        at_limit, was_at_limit = self._note_tasks(usage.tasks), self._at_process_limit
+        self._at_process_limit = at_limit
         if usage.memory_bytes > self.limits.memory_mb << 20:
             why = (f"its processes together used more than its memory limit of {self.limits.memory_mb} MB "
                    f"({usage.memory_bytes >> 20} MB, files in its /tmp and /dev/shm included); it was stopped")
@@ -326,7 +343,9 @@ class NodeProcess:
             why = None
         # A node held at its process limit spends its CPU and memory on forking: that is the cause to name, whichever
         # of the totals tripped first (the rlimit keeps the count itself from going far past the limit).
-        if usage.tasks > self.limits.processes or (why and usage.tasks >= self.limits.processes - 1):
+        # Held at the limit for two checks in a row (a second apart) is a fork bomb whatever else it does: its forks
+        # load the machine, so waiting for its silence to run out would name the silence.
+        if usage.tasks > self.limits.processes or (at_limit and (why or was_at_limit)):
             return (f"started {usage.tasks} processes and threads, at or over its limit of {self.limits.processes} "
                     "(a fork bomb or runaway threads?); it was stopped and everything it started killed")
         return why
@@ -335,7 +354,7 @@ class NodeProcess:
     def signal_group(self, sig: int) -> None:
         """Signal the node and everything it started. SIGKILL reaches all of it, wherever it went."""
         if sig == signal.SIGKILL:
-            self.peak_tasks = max(self.peak_tasks, self.census())
+            self._note_tasks(self.census())
             self._kill_all()
             return
         target = self._node_pid()

@@ -70,10 +70,11 @@ def refine(status: str, message: str, code: int | None, state: NodeState, proces
     if code is not None and code < 0 and status in ("exited", "crashed", "killed_by_limit") \
             and message == exit_status(code)[1]:
         status, message = exit_status(code, limits)
-    tasks = process.peak_tasks if process is not None else 0
-    if status in ("exited", "crashed", "timeout", "protocol_violation") and tasks >= limits.processes - 1:
-        return ("killed_by_limit", f"started {tasks} processes and threads, at its limit of {limits.processes} "
-                                   f"(a fork bomb or runaway threads?); it was stopped and everything it started killed")
+    if status in ("exited", "crashed", "timeout", "protocol_violation") and process is not None \
+            and process.hit_process_limit:
+        return ("killed_by_limit", f"started {process.peak_tasks} processes and threads and could start no more, at "
+                                   f"its limit of {limits.processes} (a fork bomb or runaway threads?); it was "
+                                   "stopped and everything it started killed")
     if status in ("exited", "crashed") and kind == "MemoryError":
         return "killed_by_limit", f"ran out of memory: the limit is {limits.memory_mb} MB (MemoryError)"
     if status in ("exited", "crashed", "timeout", "protocol_violation") and kind == "BlockingIOError" \
