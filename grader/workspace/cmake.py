@@ -17,6 +17,7 @@ MAX_VALUE_CHARS = 8192  # set(A ${A}${A}) repeated would otherwise double withou
 _EXPANSIONS = 8  # ${${name}} nests; deeper is refused
 _VARIABLE = re.compile(r"\$(?:ENV)?\{([^${}]*)\}")
 _BRACKET_OPEN = re.compile(r"\[(=*)\[")
+_HELD = "\0"  # stands for a '$' that came from a variable's value, which CMake does not expand again
 
 
 class CMakeError(Exception):
@@ -181,15 +182,19 @@ class Variables:
         self.values = dict(initial)
 
     def expand(self, text: str, line: int) -> str:
-        """``text`` with every ``${name}`` replaced (an undefined one by nothing, as CMake does)."""
+        """``text`` with every ``${name}`` replaced (an undefined one by nothing), innermost first for
+        ``${${name}}``; as in CMake, a value's own ``${...}`` text is not expanded again."""
+        def value(match: re.Match[str]) -> str:
+            return self.values.get(match.group(1).replace(_HELD, "$"), "").replace("$", _HELD)
+
         for _ in range(_EXPANSIONS):
-            expanded = _VARIABLE.sub(lambda m: self.values.get(m.group(1), ""), text)
+            expanded = _VARIABLE.sub(value, text)
             if len(expanded) > MAX_VALUE_CHARS:
                 raise CMakeError(f"CMakeLists.txt line {line}: a variable grows past {MAX_VALUE_CHARS} characters.")
             if expanded == text:
-                return text
+                return text.replace(_HELD, "$")
             text = expanded
-        raise CMakeError(f"CMakeLists.txt line {line}: variables nest more than {_EXPANSIONS} deep.")
+        raise CMakeError(f"CMakeLists.txt line {line}: variable references nest more than {_EXPANSIONS} deep.")
 
     def arguments(self, command: Command) -> list[str]:
         """The command's arguments as CMake hands them over: expanded, unquoted ones split into list items."""
