@@ -9,52 +9,7 @@ import pytest
 from grader.launch import find_packages
 from grader.workspace import read_package, read_workspace
 
-MANIFEST = """<?xml version="1.0"?>
-<package format="3">
-  <name>{name}</name>
-  <buildtool_depend>{buildtool}</buildtool_depend>
-  <exec_depend>rclpy</exec_depend>
-  {extra}
-  <export><build_type>{build_type}</build_type></export>
-</package>
-"""
-
-TEMPLATE = """cmake_minimum_required(VERSION 3.8)
-project({name})
-find_package(ament_cmake REQUIRED)
-find_package(ament_cmake_python REQUIRED)
-find_package(rclpy REQUIRED)
-
-# Install Python modules
-ament_python_install_package(${{PROJECT_NAME}}_modules)
-
-# Install Python executables
-install(PROGRAMS
-  scripts/move_circle.py
-  DESTINATION lib/${{PROJECT_NAME}}
-)
-
-ament_package()
-"""
-
-
-def _write(path: Path, text: str) -> Path:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text)
-    return path
-
-
-def cmake_package(folder: Path, name: str = "part2_navigation", cmakelists: str | None = None,
-                  extra: str = "") -> Path:
-    """A package from COM2009's ament_cmake template: scripts/, <name>_modules/, CMakeLists.txt, package.xml."""
-    _write(folder / "package.xml", MANIFEST.format(name=name, buildtool="ament_cmake", build_type="ament_cmake",
-                                                   extra=extra))
-    _write(folder / "CMakeLists.txt", cmakelists if cmakelists is not None else TEMPLATE.format(name=name))
-    _write(folder / f"{name}_modules" / "__init__.py", "")
-    _write(folder / f"{name}_modules" / "tb3_tools.py", "def quaternion_to_euler(q):\n    return q\n")
-    script = _write(folder / "scripts" / "move_circle.py", "#!/usr/bin/env python3\nimport rclpy\n")
-    script.chmod(0o755)
-    return folder
+from workspace_helpers import MANIFEST, TEMPLATE, cmake_package, write
 
 
 def test_the_com2009_template_package(tmp_path: Path) -> None:
@@ -134,8 +89,8 @@ def test_launch_and_config_folders_are_share_files(tmp_path: Path) -> None:
     text = TEMPLATE.format(name="p").replace(
         "ament_package()", "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\nament_package()")
     folder = cmake_package(tmp_path / "p", "p", text)
-    _write(folder / "launch" / "circle.launch.py", "")
-    _write(folder / "config" / "params.yaml", "")
+    write(folder / "launch" / "circle.launch.py", "")
+    write(folder / "config" / "params.yaml", "")
     assert read_package(folder).share == (folder / "launch", folder / "config")
 
 
@@ -146,8 +101,8 @@ def test_interfaces_listed_and_not_listed(tmp_path: Path) -> None:
         "ament_package()"))
     folder = cmake_package(tmp_path / "p", "p", text,
                            extra="<member_of_group>rosidl_interface_packages</member_of_group>")
-    _write(folder / "srv" / "MyNumberGame.srv", "int32 guess\n---\nstring hint\n")
-    _write(folder / "action" / "ExploreForward.action", "float32 stopping_distance\n---\n---\n")
+    write(folder / "srv" / "MyNumberGame.srv", "int32 guess\n---\nstring hint\n")
+    write(folder / "action" / "ExploreForward.action", "float32 stopping_distance\n---\n---\n")
     package = read_package(folder)
     assert [(i.kind, i.path.name, i.listed) for i in package.interfaces] == [
         ("srv", "MyNumberGame.srv", True), ("action", "ExploreForward.action", False)]
@@ -159,24 +114,24 @@ def test_interfaces_need_member_of_group(tmp_path: Path) -> None:
     text = TEMPLATE.format(name="p").replace(
         "ament_package()", 'rosidl_generate_interfaces(${PROJECT_NAME} "srv/A.srv")\nament_package()')
     folder = cmake_package(tmp_path / "p", "p", text)
-    _write(folder / "srv" / "A.srv", "---\n")
+    write(folder / "srv" / "A.srv", "---\n")
     [finding] = read_package(folder).findings
     assert "<member_of_group>rosidl_interface_packages</member_of_group>" in finding
 
 
 def test_catkin_messages_and_python_setup(tmp_path: Path) -> None:
     folder = tmp_path / "beginner"
-    _write(folder / "package.xml", MANIFEST.format(name="beginner", buildtool="catkin", build_type="catkin",
+    write(folder / "package.xml", MANIFEST.format(name="beginner", buildtool="catkin", build_type="catkin",
                                                    extra="").replace("rclpy", "rospy"))
-    _write(folder / "CMakeLists.txt", "project(beginner)\nfind_package(catkin REQUIRED)\ncatkin_python_setup()\n"
+    write(folder / "CMakeLists.txt", "project(beginner)\nfind_package(catkin REQUIRED)\ncatkin_python_setup()\n"
                                       "add_message_files(FILES Num.msg)\nadd_service_files(DIRECTORY srv)\n"
                                       "generate_messages(DEPENDENCIES std_msgs)\ncatkin_package()\n")
-    _write(folder / "setup.py", "from catkin_pkg.python_setup import generate_distutils_setup\n"
+    write(folder / "setup.py", "from catkin_pkg.python_setup import generate_distutils_setup\n"
                                 "d = generate_distutils_setup(packages=['beginner_tools'], package_dir={'': 'src'})\n")
-    _write(folder / "src" / "beginner_tools" / "__init__.py", "")
-    _write(folder / "msg" / "Num.msg", "int64 num\n")
-    _write(folder / "msg" / "Other.msg", "int64 num\n")
-    _write(folder / "srv" / "AddTwoInts.srv", "int64 a\n---\nint64 sum\n")
+    write(folder / "src" / "beginner_tools" / "__init__.py", "")
+    write(folder / "msg" / "Num.msg", "int64 num\n")
+    write(folder / "msg" / "Other.msg", "int64 num\n")
+    write(folder / "srv" / "AddTwoInts.srv", "int64 a\n---\nint64 sum\n")
     package = read_package(folder)
     assert package.build_type == "catkin"
     assert [(p.name, p.root) for p in package.python_packages] == [("beginner_tools", folder / "src")]
@@ -227,14 +182,14 @@ def test_a_package_xml_with_entities_is_refused_quickly(tmp_path: Path) -> None:
 
 def test_an_ament_python_package(tmp_path: Path) -> None:
     folder = tmp_path / "pkg"
-    _write(folder / "package.xml", MANIFEST.format(name="my_pkg", buildtool="ament_python",
+    write(folder / "package.xml", MANIFEST.format(name="my_pkg", buildtool="ament_python",
                                                    build_type="ament_python", extra=""))
-    _write(folder / "setup.py", "from setuptools import find_packages, setup\npackage_name = 'my_pkg'\n"
+    write(folder / "setup.py", "from setuptools import find_packages, setup\npackage_name = 'my_pkg'\n"
                                 "setup(name=package_name, packages=find_packages(exclude=['test']),\n"
                                 "      entry_points={'console_scripts': ['circle = my_pkg.move_circle:main']})\n")
-    _write(folder / "my_pkg" / "__init__.py", "")
-    _write(folder / "my_pkg" / "move_circle.py", "import rclpy\n")
-    _write(folder / "test" / "__init__.py", "")
+    write(folder / "my_pkg" / "__init__.py", "")
+    write(folder / "my_pkg" / "move_circle.py", "import rclpy\n")
+    write(folder / "test" / "__init__.py", "")
     package = read_package(folder)
     assert package.build_type == "ament_python" and package.setup_package_name == "my_pkg"
     [exe] = package.executables
@@ -245,8 +200,8 @@ def test_an_ament_python_package(tmp_path: Path) -> None:
 def test_a_setup_py_that_does_not_parse_is_a_finding_and_is_never_run(tmp_path: Path) -> None:
     folder = tmp_path / "pkg"
     marker = tmp_path / "ran"
-    _write(folder / "package.xml", "<package format='3'><name>my_pkg</name></package>")
-    _write(folder / "setup.py", f"open({str(marker)!r}, 'w').close()\nsetup(name='my_pkg',\n")
+    write(folder / "package.xml", "<package format='3'><name>my_pkg</name></package>")
+    write(folder / "setup.py", f"open({str(marker)!r}, 'w').close()\nsetup(name='my_pkg',\n")
     package = read_package(folder)
     assert package.build_type == "ament_python" and not marker.exists()
     [finding] = package.findings
