@@ -1,0 +1,37 @@
+"""The ROS 2 references in COM2009's ament_cmake template (nodes in scripts/ importing part2_navigation_modules)
+score what their ament_python twin scores, with nothing for `colcon build` or `ros2 run` to trip over."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+pytestmark = pytest.mark.slow
+
+ROOT = Path(__file__).resolve().parents[2]
+CMAKE_TWIN = ROOT / "reference_solutions_ros2_cmake" / "part2_navigation"
+PYTHON_TWIN = ROOT / "reference_solutions_ros2" / "part2_navigation"
+TASKS = ("move_circle", "move_square", "odom_subscriber")
+
+
+def _task(report, task):
+    return next(t for t in report.tasks if t.id == task)
+
+
+def test_the_cmake_package_is_found_as_the_three_tasks(graded):
+    assert sorted(t.id for t in graded(CMAKE_TWIN).tasks) == sorted(TASKS)
+
+
+@pytest.mark.parametrize("task", TASKS)
+def test_cmake_twin_scores_what_the_ament_python_twin_scores(graded, task):
+    cmake, python = _task(graded(CMAKE_TWIN), task), _task(graded(PYTHON_TWIN), task)
+    assert cmake.status == "graded", cmake.message
+    assert cmake.score == cmake.max_score == python.score
+    assert [(c.id, c.score, c.measured) for c in cmake.criteria] == \
+        [(c.id, c.score, c.measured) for c in python.criteria]
+
+
+@pytest.mark.parametrize("task", TASKS)
+def test_nothing_for_colcon_or_ros2_run_to_trip_over(graded, task):
+    diagnostics = _task(graded(CMAKE_TWIN), task).diagnostics
+    assert not [d for d in diagnostics if "ros2 run" in d or "colcon" in d or "Error" in d], diagnostics
