@@ -445,4 +445,26 @@ CASES += [
     ), stderr_empty=True),
 ]
 
+# Issue 28 item 8: latched messages for every later subscriber, and one connection (thread, queue) per publisher.
+CASES += [
+    Case("p31_latched_subscribers", "p31_latched_subscribers.py", duration=4.0, stdout=(
+        "first subscriber got ['second']",
+        "wait_for_message on the latched topic got second t=1.000",
+        "later subscriber got at once [('second', 'arg', 'MainThread', '1', '/p31_latched_subscribers')]",
+        "later subscriber of the plain topic got at once []",
+        "after a third message: first ['second', 'third'] later ['second', 'third'] newest subscriber ['third']",
+        "subscriber after the publisher unregistered got []",
+        "wait_for_message on the plain topic !! timeout exceeded while waiting for message on topic /p31_plain",
+    ), stderr_empty=True),
+    # the first callbacks of both connections come within 0.2 s of the subscription: 7 of 0.3 s each in 2 s
+    Case("p32_connection_queues", "p32_connection_queues.py", duration=8.0, stdout=(
+        "callbacks in 2 s per publisher [('/gazebo', 7), ('/p32_connection_queues', 7)]",
+        "the two publishers' callbacks ran at the same time True",
+        "slow subscriber read its backlog whole (queue_size 10 kept) True",
+        "fast subscriber called only from the next read on True",
+        "fast subscriber called for messages the slow one got True",
+        "threads ['/odom']",
+    ), stderr_empty=True),
+]
+
 CASES_BY_ID = {case.id: case for case in CASES}
