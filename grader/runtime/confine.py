@@ -390,10 +390,10 @@ def _shown_package(cap: Capability, script: Path, workdir: Path) -> tuple[Path, 
 
 def _shown_imports(cap: Capability, script: Path, workdir: Path, roots: Sequence[Path]) -> list[tuple[str, str]]:
     """(host folder, path inside) for the node's import roots that its own package does not already show."""
-    package = str(package_folder(script)) + "/"
+    shown = (str(package_folder(script)) + "/", NODELIB + "/")
     pairs = []
     for index, root in enumerate(roots):
-        if (str(root) + "/").startswith(package) or (str(root) + "/").startswith(NODELIB + "/"):
+        if not root.is_dir() or (str(root) + "/").startswith(shown):
             continue
         staged = None if not cap.root or tree_readable(root) else readable_copy(root, workdir / f"import{index}")
         pairs.append((str(staged or root), str(root)))
