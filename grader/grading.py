@@ -73,7 +73,7 @@ def _present_tasks(folder: Path, rubrics: Mapping[str, Rubric]) -> list[str]:
 
 def _node_spec(script: Path, node: Node, workspace: Workspace) -> NodeSpec:
     flavour = client_library(script, workspace)
-    roots = import_roots(script, workspace)
+    roots = import_roots(script, workspace, flavour)
     if flavour == ROS2:
         # rclpy reads remaps after --ros-args (`ros2 run pkg exe --ros-args -r cmd_vel:=/x`)
         remaps = [part for name, target in node.remaps.items() for part in ("-r", f"{name}:={target}")]

@@ -103,13 +103,13 @@ def entry_point(script: Path, workspace: Workspace | None = None) -> EntryPoint 
                       package.folder)
 
 
-def import_roots(script: Path, workspace: Workspace | None = None) -> tuple[Path, ...]:
+def import_roots(script: Path, workspace: Workspace | None = None, flavour: str = ROS2) -> tuple[Path, ...]:
     """The folders to put on the node's import path so that it imports the Python packages the workspace's build
-    installs (its own package's first), as a sourced colcon or catkin workspace would."""
+    installs (its own package's first), as a sourced colcon (ROS2) or catkin (ROS1) workspace would."""
     ws = _workspace(script, workspace)
     own = ws.enclosing(script)
-    items = list(own.python_packages if own else ()) + ws.python_packages()
-    roots = dict.fromkeys(item.root.resolve() for item in items)
+    same = [p for p in ([own] if own else []) + list(ws.packages()) if (p.build_type == "catkin") == (flavour == ROS1)]
+    roots = dict.fromkeys(item.root.resolve() for package in same for item in package.python_packages)
     return tuple(roots)[:MAX_IMPORT_ROOTS]
 
 

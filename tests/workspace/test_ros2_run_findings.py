@@ -147,3 +147,21 @@ def test_a_lone_script_imports_nothing_from_a_workspace(tmp_path: Path) -> None:
     script = tmp_path / "move_circle.py"
     script.write_text("import rclpy\n")
     assert import_roots(script) == ()
+
+
+def test_roots_come_from_packages_of_the_script_s_ros_version(tmp_path: Path) -> None:
+    nav = cmake_package(tmp_path / "src" / "part2_navigation")
+    beginner = tmp_path / "src" / "beginner"
+    beginner.mkdir()
+    (beginner / "package.xml").write_text(MANIFEST.format(name="beginner", buildtool="catkin", build_type="catkin",
+                                                          extra=""))
+    (beginner / "CMakeLists.txt").write_text("project(beginner)\ncatkin_python_setup()\n")
+    (beginner / "setup.py").write_text("from setuptools import setup\nsetup(packages=['beginner_tools'], "
+                                       "package_dir={'': 'src'})\n")
+    (beginner / "src" / "beginner_tools").mkdir(parents=True)
+    (beginner / "src" / "beginner_tools" / "__init__.py").write_text("")
+    mover = beginner / "mover.py"
+    mover.write_text("import rospy\n")
+    workspace = read_workspace(tmp_path)
+    assert import_roots(mover, workspace, ROS1) == ((beginner / "src").resolve(),)
+    assert import_roots(nav / "scripts" / "move_circle.py", workspace, ROS2) == (nav.resolve(),)
