@@ -457,13 +457,14 @@ CASES += [
         "wait_for_message on the plain topic !! timeout exceeded while waiting for message on topic /p31_plain",
     ), stderr_empty=True),
     # the first callbacks of both connections come within 0.2 s of the subscription: 7 of 0.3 s each in 2 s
-    Case("p32_connection_queues", "p32_connection_queues.py", duration=8.0, stdout=(
+    Case("p32_connection_queues", "p32_connection_queues.py", duration=9.0, stdout=(
         "callbacks in 2 s per publisher [('/gazebo', 7), ('/p32_connection_queues', 7)]",
         "the two publishers' callbacks ran at the same time True",
         "slow subscriber read its backlog whole (queue_size 10 kept) True",
         "fast subscriber called only from the next read on True",
         "fast subscriber called for messages the slow one got True",
         "threads ['/odom']",
+        "queue_size 3: the second read's messages are consecutive True",
     ), stderr_empty=True),
 ]
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Probe 32 (issue 28 item 8): rospy receives on one connection per publisher, each with its own thread and queue;
-a connection keeps the queue size it was made with, and its callbacks are the ones registered when it read."""
+a connection keeps the queue size it was made with, each read keeps the last queue_size messages of what arrived
+since the last one, and calls the callbacks registered when it read."""
 import threading
 import time
 
@@ -53,11 +54,13 @@ def slow_odom(msg):
     time.sleep(0.25)
 
 
-rospy.Subscriber("/odom", Odometry, slow_odom, queue_size=10)
+slow_sub = rospy.Subscriber("/odom", Odometry, slow_odom, queue_size=10)
 rospy.sleep(0.5)
-rospy.Subscriber("/odom", Odometry, lambda m: fast_seqs.append((m.header.seq, threading.current_thread().name)),
-                 queue_size=1)
+fast_sub = rospy.Subscriber("/odom", Odometry,
+                            lambda m: fast_seqs.append((m.header.seq, threading.current_thread().name)), queue_size=1)
 rospy.sleep(2.5)
+slow_sub.unregister()
+fast_sub.unregister()
 backlog = slow_seqs[1:]
 run = 1
 while run < len(backlog) and backlog[run] == backlog[0] + run:
@@ -66,3 +69,17 @@ print("slow subscriber read its backlog whole (queue_size 10 kept)", 6 <= run <=
 print("fast subscriber called only from the next read on", bool(fast_seqs) and fast_seqs[0][0] > backlog[run - 1])
 print("fast subscriber called for messages the slow one got", all(s in slow_seqs for s, _ in fast_seqs))
 print("threads", sorted({name for _, name in fast_seqs}))
+
+# Part 3: queue_size=3 under a 0.3 s callback: each read keeps the last 3 of the ~9 messages received meanwhile.
+read_seqs = []
+
+
+def slow_read(msg):
+    read_seqs.append(msg.header.seq)
+    time.sleep(0.3)
+
+
+rospy.Subscriber("/odom", Odometry, slow_read, queue_size=3)
+rospy.sleep(1.3)
+gaps = [b - a for a, b in zip(read_seqs, read_seqs[1:])]
+print("queue_size 3: the second read's messages are consecutive", gaps[1:3] == [1, 1])
