@@ -24,7 +24,7 @@ INTERFACE_KINDS = ("msg", "srv", "action")
 
 
 class WorkspaceError(Exception):
-    """The folder given as a workspace does not exist."""
+    """The folder given as a workspace does not exist, or a package or executable asked for is not in it."""
 
 
 @dataclass(frozen=True)
@@ -379,6 +379,26 @@ class Workspace:
             package = self.package(name)
             if package is not None:
                 yield package
+
+    def executable(self, package: str, name: str) -> Executable:
+        """What `ros2 run <package> <name>` (an ament package) or `rosrun` (catkin) starts, or WorkspaceError with
+        what they would print: ament finds only what the build installs, rosrun any executable file of the package."""
+        found = self.package(package)
+        if found is None:
+            raise WorkspaceError(f"Package '{package}' not found")
+        if found.build_type != "catkin":
+            match = next((e for e in found.executables if e.name == name), None)
+            if match is None:
+                raise WorkspaceError(f"No executable found (`ros2 run {package} {name}`: the build of {package} "
+                                     f"installs {', '.join(sorted(e.name for e in found.executables)) or 'none'})")
+            return match
+        for folder, dirs, files in os.walk(found.folder):
+            depth = len(Path(folder).relative_to(found.folder).parts)
+            dirs[:] = [] if depth >= MAX_DEPTH else sorted(d for d in dirs if not d.startswith(".")
+                                                           and d not in SKIPPED_DIRS)
+            if name in files and os.access(Path(folder) / name, os.X_OK):
+                return Executable(name, Path(folder) / name)
+        raise WorkspaceError(f"[rosrun] Couldn't find executable named {name} below {found.folder}")
 
     def python_packages(self) -> list[PythonPackage]:
         """Every Python package the workspace's build would install, by import name (the first one of a name)."""

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from grader.launch import find_packages
-from grader.workspace import read_package, read_workspace
+from grader.workspace import WorkspaceError, read_package, read_workspace
 
 from workspace_helpers import MANIFEST, TEMPLATE, cmake_package, write
 
@@ -233,3 +233,24 @@ def test_a_script_s_workspace_is_its_package(tmp_path: Path) -> None:
     assert workspace.folders == {"p": folder}
     assert workspace.enclosing(folder / "scripts" / "move_circle.py").name == "p"
     assert read_workspace(folder / "scripts").folders == {"p": folder}
+
+
+def test_ros2_run_finds_what_the_build_installs_with_its_py(tmp_path: Path) -> None:
+    workspace = read_workspace(cmake_package(tmp_path / "p", "p"))
+    assert workspace.executable("p", "move_circle.py").script == tmp_path / "p" / "scripts" / "move_circle.py"
+    with pytest.raises(WorkspaceError, match="No executable found"):
+        workspace.executable("p", "move_circle")
+    with pytest.raises(WorkspaceError, match="Package 'q' not found"):
+        workspace.executable("q", "move_circle.py")
+
+
+def test_rosrun_finds_any_executable_file_of_a_catkin_package(tmp_path: Path) -> None:
+    folder = tmp_path / "beginner"
+    write(folder / "package.xml", "<package format='2'><name>beginner</name>"
+                                  "<buildtool_depend>catkin</buildtool_depend></package>")
+    write(folder / "src" / "mover.py", "import rospy\n").chmod(0o755)
+    write(folder / "src" / "plain.py", "import rospy\n").chmod(0o644)
+    workspace = read_workspace(tmp_path)
+    assert workspace.executable("beginner", "mover.py").script == folder / "src" / "mover.py"
+    with pytest.raises(WorkspaceError, match="Couldn't find executable named plain.py"):
+        workspace.executable("beginner", "plain.py")
