@@ -177,9 +177,11 @@ def _import_findings(script: Path, ws: Workspace) -> list[str]:
     for top, sub in dict.fromkeys(pairs or ()):
         item = installed.get(top)
         if item is not None and not item.declared:
-            notes.append(f"{script.name} imports {top}, but CMakeLists.txt does not install it, so `ros2 run` would "
-                         f"stop with \"ModuleNotFoundError: No module named '{top}'\". Add "
-                         f"`ament_python_install_package({top})` to CMakeLists.txt (it was graded as if it did).")
+            spelled = "${PROJECT_NAME}_modules" if top == f"{item.root.name}_modules" else top
+            notes.append(f"{script.name} imports {top}, but {item.root.name}/CMakeLists.txt does not install it, so "
+                         f"`ros2 run` would stop with \"ModuleNotFoundError: No module named '{top}'\". Add "
+                         f"`ament_python_install_package({spelled})` to that CMakeLists.txt (it was graded as if it "
+                         "did).")
         elif item is None and not _importable(top, script):
             near = [name for name, other in installed.items()
                     if (sub and ((other.folder / sub).is_dir() or (other.folder / f"{sub}.py").is_file()))

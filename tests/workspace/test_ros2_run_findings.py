@@ -105,7 +105,7 @@ def test_modules_the_build_does_not_install(tmp_path: Path) -> None:
     script = _script(folder, "#!/usr/bin/env python3\nimport rclpy\nfrom p_modules.tb3_tools import x\n")
     [finding] = package_findings(script, None)
     assert "ModuleNotFoundError: No module named 'p_modules'" in finding
-    assert "ament_python_install_package(p_modules)" in finding
+    assert "p/CMakeLists.txt" in finding and "ament_python_install_package(${PROJECT_NAME}_modules)" in finding
     assert import_roots(script) == (folder.resolve(),)  # graded as if it were installed
 
 
