@@ -1,0 +1,116 @@
+"""What stays the same when the grader runs on another CPU: recordings byte for byte, grades field for field.
+
+Run by hand (`python3 tests/determinism/cross_cpu.py FOLDER_OR_SCRIPT... [--task T]`) it checks each path three
+ways and prints what differs:
+
+* ``native``: this machine as it is (numpy and OpenBLAS pick their kernels for this CPU, AVX-512 where it has it);
+* ``numpy-baseline``: numpy limited to its baseline kernels (NPY_DISABLE_CPU_FEATURES) and OpenBLAS to its
+  Haswell kernels, in the grader and, through the environment it hands on, nowhere else (nodes get a clean one);
+* ``haswell``: the grader under ``qemu-x86_64 -cpu Haswell`` (Debian's qemu-user), a CPU without AVX-512, so that
+  MuJoCo, numpy and OpenBLAS all run another CPU's code paths. The nodes still run natively: qemu-user does not
+  follow the grader's exec of the node's interpreter.
+
+The test beside it (test_cross_cpu.py) runs one TurtleBot task the first and last way.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[2]
+QEMU = shutil.which("qemu-x86_64")
+# Feature names numpy 2.x dispatches on x86_64 beyond its X86_V2 baseline; numpy ignores names it does not know.
+NUMPY_BASELINE = "X86_V3 X86_V4 AVX512_ICL AVX512_SPR AVX512F AVX512CD AVX512_SKX AVX512_CLX AVX512_CNL AVX2 FMA3"
+WAYS = {
+    "native": ([], {}),
+    "numpy-baseline": ([], {"NPY_DISABLE_CPU_FEATURES": NUMPY_BASELINE, "OPENBLAS_CORETYPE": "Haswell"}),
+    "haswell": ([QEMU or "qemu-x86_64", "-cpu", "Haswell"], {}),
+}
+
+
+@dataclass
+class Comparison:
+    """Two checks of the same submission, file by file and criterion by criterion."""
+
+    same_files: list[str] = field(default_factory=list)
+    different_files: list[str] = field(default_factory=list)
+    different_grades: list[str] = field(default_factory=list)
+
+
+def check(target: Path, out: Path, way: str, tasks: list[str]) -> float:
+    """Grade target one way into out; the wall seconds it took."""
+    prefix, extra = WAYS[way]
+    env = {**os.environ, **extra, "PYTHONWARNINGS": "ignore"}
+    command = [*prefix, sys.executable, "-m", "grader.cli", "check", str(target), "-j", "1", "--out", str(out),
+               *[arg for task in tasks for arg in ("--task", task)]]
+    started = time.monotonic()
+    done = subprocess.run(command, cwd=REPO, env=env, capture_output=True, text=True, timeout=3600)
+    if done.returncode not in (0, 1):
+        raise RuntimeError(f"{way} check of {target} failed ({done.returncode}): {done.stderr[-2000:]}")
+    return time.monotonic() - started
+
+
+def _grades(report: Path) -> dict[str, object]:
+    """Every task's and criterion's score, measured values and feedback, keyed by where they are."""
+    data = json.loads(report.read_text())
+    grades: dict[str, object] = {"score": data["score"], "max_score": data["max_score"]}
+    for task in data["tasks"]:
+        grades[f"{task['id']}.score"] = (task["score"], task["max_score"], task["status"])
+        for criterion in task["criteria"]:
+            for key in ("score", "passed", "feedback", "measured"):
+                grades[f"{task['id']}.{criterion['id']}.{key}"] = criterion[key]
+    return grades
+
+
+def compare(first: Path, second: Path) -> Comparison:
+    """Recordings and logs byte for byte, grades field for field, of two report folders of the same check."""
+    result = Comparison()
+    for path in sorted(first.rglob("*")):
+        if path.suffix in (".mcap", ".log") and path.is_file():
+            name = str(path.relative_to(first))
+            other = second / name
+            same = other.is_file() and other.read_bytes() == path.read_bytes()
+            (result.same_files if same else result.different_files).append(name)
+    ours, theirs = _grades(first / "report.json"), _grades(second / "report.json")
+    result.different_grades = [key for key in sorted(ours.keys() | theirs.keys()) if ours.get(key) != theirs.get(key)]
+    return result
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("targets", nargs="+", type=Path)
+    parser.add_argument("--task", action="append", default=[])
+    parser.add_argument("--out", type=Path, default=Path("/tmp/rosgrade-cross-cpu"))
+    parser.add_argument("--ways", default="native,numpy-baseline,haswell")
+    args = parser.parse_args()
+    ways = args.ways.split(",")
+    if "haswell" in ways and QEMU is None:
+        print("qemu-x86_64 not found (Debian: apt install qemu-user): the haswell way is left out")
+        ways.remove("haswell")
+    print(f"{'submission':40} {'way':15} {'wall s':>7} {'same files':>10} {'differ':>6} {'grades differ':>13}")
+    for target in args.targets:
+        base = args.out / target.name
+        for way in ways:
+            wall = check(target.resolve(), base / way, way, args.task)
+            if way == ways[0]:
+                print(f"{target.name:40} {way:15} {wall:7.1f}")
+                continue
+            result = compare(base / ways[0], base / way)
+            print(f"{target.name:40} {way:15} {wall:7.1f} {len(result.same_files):10} "
+                  f"{len(result.different_files):6} {len(result.different_grades):13}")
+            for name in result.different_files:
+                print(f"    differs: {name}")
+            for key in result.different_grades:
+                print(f"    grade differs: {key}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
