@@ -145,6 +145,7 @@ class NodeProcess:
         self.peak_tasks = 0  # processes + threads seen in the node's sandbox when it was killed
         self.hit_process_limit = False  # whether the node was ever seen unable to start another process or thread
         self._at_process_limit = False  # at the last check
+        self._queue_pid: int | None = None  # the node's interpreter, once found (queued_s)
         self._init: tuple[int, int | None] | None = None  # the sandbox's init: (pid, start tick), see _sandbox_init
         workdir.mkdir(parents=True, exist_ok=True)
         script = Path(os.path.abspath(spec.script))
@@ -316,6 +317,17 @@ class NodeProcess:
                                                                                       "/dev/shm"))
         tasks = sum(int(confine.status_fields(pid).get("Threads", "1") or 1) for pid in pids)
         return Usage(memory, sum(confine.cpu_seconds(pid) for pid in pids), tasks)
+
+    def queued_s(self) -> float:
+        """Seconds the node's interpreter has spent runnable but waiting for a CPU (the kernel's schedstat; 0 where
+        the kernel keeps none): time a busy machine took from it, not time it chose to spend."""
+        if self._queue_pid is None:
+            self._queue_pid = self._node_pid()
+        try:
+            with open(f"/proc/{self._queue_pid}/schedstat", "rb") as stat:
+                return int(stat.read().split()[1]) / 1e9
+        except (OSError, ValueError, IndexError):
+            return 0.0
 
     def _note_tasks(self, tasks: int) -> bool:
         """Record the node's task count; whether it is at its process limit, where forks fail."""

@@ -246,7 +246,8 @@ class Session:
         except ProcessError as exc:
             raise RunError(str(exc)) from None
         link = NodeLink(process.read_fd, process.write_fd, self.catalog, self.spec.limits.silent_wall_s,
-                        self.spec.limits.output_bytes, RESERVED_NAMES, process.over_limit, USAGE_PERIOD_S)
+                        self.spec.limits.output_bytes, RESERVED_NAMES, process.over_limit, USAGE_PERIOD_S,
+                        process.queued_s)
         self.nodes.append(_Node(node_spec, process, link,
                                 NodeOutcome(script=node_spec.script.name, findings=list(process.notes))))
 

@@ -1,5 +1,6 @@
 """While the grader waits for a silent node it keeps checking the node's totals: a node over its memory or CPU limit
-is stopped for that, within a check period, not for its silence once the watchdog runs out."""
+is stopped for that, within a check period, not for its silence once the watchdog runs out; time it spends
+waiting for a CPU on a busy machine is not silence."""
 from __future__ import annotations
 
 import os
@@ -69,3 +70,25 @@ def test_the_limit_is_named_when_the_watchdog_runs_out_between_two_checks(pipes)
 def test_without_a_check_a_silent_node_is_stopped_for_its_silence(pipes) -> None:
     with pytest.raises(NodeSilent):
         NodeLink(*pipes, CATALOG, silent_wall_s=0.1, output_cap=1 << 20).run_until_wait(0, lambda event: None)
+
+
+class RunQueue:
+    """A stand-in for NodeProcess.queued_s: the node waits ``share`` of every wall second for a CPU."""
+
+    def __init__(self, share: float) -> None:
+        self.share = share
+        self.started = time.monotonic()
+
+    def __call__(self) -> float:
+        return (time.monotonic() - self.started) * self.share
+
+
+def test_time_a_starved_node_waits_for_a_cpu_is_not_its_silence(pipes) -> None:
+    link = NodeLink(*pipes, CATALOG, silent_wall_s=0.3, output_cap=1 << 20, check_every_s=0.05,
+                    queued_s=RunQueue(share=0.5))
+    started = time.monotonic()
+    with pytest.raises(NodeSilent):
+        link.run_until_wait(0, lambda event: None)
+    # Half of each second was the machine's: the watchdog needs 0.3 s of the node's own, about 0.6 s of wall time.
+    assert time.monotonic() - started >= 0.5
+
