@@ -11,7 +11,7 @@ import os
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
+from typing import Literal, TypedDict
 
 from grader.workspace import cmake
 from grader.workspace.manifest import Manifest, ManifestError, SetupPy, name_only, read_manifest, read_setup
@@ -82,6 +82,17 @@ class Package:
         return next((e for e in self.executables if e.script.resolve() == target), None)
 
 
+class _Parts(TypedDict, total=False):
+    """What a package's build files add to its Package (the fields beyond name, folder, build type, depends)."""
+
+    executables: tuple[Executable, ...]
+    python_packages: tuple[PythonPackage, ...]
+    interfaces: tuple[Interface, ...]
+    share: tuple[Path, ...]
+    findings: tuple[str, ...]
+    setup_package_name: str | None
+
+
 def _build_type(manifest: Manifest, folder: Path) -> BuildType:
     """package.xml's <build_type>, else what the files say (catkin_pkg's default, catkin, when nothing does)."""
     if manifest.build_type in ("catkin", "ament_python", "ament_cmake"):
@@ -91,7 +102,16 @@ def _build_type(manifest: Manifest, folder: Path) -> BuildType:
     has_cmake = (folder / "CMakeLists.txt").is_file()
     if (folder / "setup.py").is_file() and not has_cmake:
         return "ament_python"
-    return "ament_cmake" if has_cmake and "ament_cmake" in manifest.depends else "catkin"
+    return "ament_cmake" if has_cmake and ("ament_cmake" in manifest.depends or _mentions_ament(folder)) else "catkin"
+
+
+def _mentions_ament(folder: Path) -> bool:
+    """Whether CMakeLists.txt builds with ament (for a package.xml that does not say, or cannot be read)."""
+    try:
+        with open(folder / "CMakeLists.txt", "rb") as handle:
+            return b"ament_cmake" in handle.read(cmake.MAX_BYTES)
+    except OSError:
+        return False
 
 
 def _found_python_packages(base: Path, excluded: tuple[str, ...]) -> list[str]:
@@ -110,7 +130,7 @@ def _setup_python(folder: Path, setup: SetupPy) -> list[PythonPackage]:
     return [PythonPackage(name, base / name) for name in tops if (base / name).is_dir()]
 
 
-def _ament_python(folder: Path, manifest: Manifest) -> dict:
+def _ament_python(folder: Path) -> _Parts:
     try:
         setup = read_setup(folder / "setup.py")
     except ManifestError as exc:
@@ -157,8 +177,8 @@ class _CMakeReading:
         return Path(os.path.normpath(self.folder / text))
 
     def bin_destination(self, destination: str) -> bool:
-        return destination.rstrip("/") in (f"lib/{self.name}", f"{self.name}") or \
-            destination.rstrip("/").endswith(f"lib/{self.name}")
+        """Whether files installed there are the package's executables (lib/<package>, as `ros2 run` looks)."""
+        return destination.rstrip("/").endswith(f"lib/{self.name}")
 
     def install(self, args: list[str], line: int) -> None:
         kind = args[0].upper() if args else ""
@@ -276,7 +296,7 @@ def _interface_files(folder: Path, listed: set[Path]) -> tuple[Interface, ...]:
     return tuple(found)
 
 
-def _cmake_package(folder: Path, name: str, manifest: Manifest, build_type: BuildType) -> dict:
+def _cmake_package(folder: Path, name: str, manifest: Manifest, build_type: BuildType) -> _Parts:
     reading = _CMakeReading(folder, name, build_type == "catkin")
     try:
         reading.read(cmake.read(folder / "CMakeLists.txt"))
@@ -319,8 +339,9 @@ def read_package(folder: Path) -> Package | None:
     if manifest.name is None:
         return None
     build_type = _build_type(manifest, folder)
+    parts: _Parts
     if build_type == "ament_python":
-        parts = _ament_python(folder, manifest)
+        parts = _ament_python(folder)
     elif (folder / "CMakeLists.txt").is_file():
         parts = _cmake_package(folder, manifest.name, manifest, build_type)
     elif build_type == "ament_cmake":
@@ -359,10 +380,11 @@ class Workspace:
         self._read: dict[Path, Package | None] = {}
 
     def package_at(self, folder: Path) -> Package | None:
-        """The package in ``folder`` (read once)."""
-        if folder not in self._read:
-            self._read[folder] = read_package(folder)
-        return self._read[folder]
+        """The package in ``folder`` (read once, however the folder is spelled)."""
+        key = folder.resolve()
+        if key not in self._read:
+            self._read[key] = read_package(folder)
+        return self._read[key]
 
     def package(self, name: str) -> Package | None:
         folder = self.folders.get(name)

@@ -254,3 +254,9 @@ def test_rosrun_finds_any_executable_file_of_a_catkin_package(tmp_path: Path) ->
     assert workspace.executable("beginner", "mover.py").script == folder / "src" / "mover.py"
     with pytest.raises(WorkspaceError, match="Couldn't find executable named plain.py"):
         workspace.executable("beginner", "plain.py")
+
+
+def test_a_malformed_package_xml_of_an_ament_cmake_package_stays_ament_cmake(tmp_path: Path) -> None:
+    folder = cmake_package(tmp_path / "p", "p")
+    (folder / "package.xml").write_text("<package><name>p</name><export></package>\n")
+    assert read_package(folder).build_type == "ament_cmake"
