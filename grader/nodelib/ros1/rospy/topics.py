@@ -7,7 +7,6 @@ import re
 import traceback
 import zlib
 import warnings
-from collections import deque
 
 import genpy
 import rosgrade_channel as ch
