@@ -11,6 +11,8 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from grader.workspace.manifest import read_regular
+
 MAX_BYTES = 256 * 1024  # a course package's CMakeLists.txt is about 1 kB
 MAX_COMMANDS = 4000
 MAX_VALUE_CHARS = 8192  # set(A ${A}${A}) repeated would otherwise double without bound
@@ -168,8 +170,7 @@ def parse(text: str) -> list[Command]:
 def read(path: Path) -> list[Command]:
     """parse() of the file at ``path``, read at most MAX_BYTES + 1 bytes (CMakeError if unreadable or too large)."""
     try:
-        with open(path, "rb") as handle:
-            raw = handle.read(MAX_BYTES + 1)
+        raw = read_regular(path, MAX_BYTES + 1)
     except OSError as exc:
         raise CMakeError(f"CMakeLists.txt cannot be read ({exc.strerror}).") from None
     return parse(raw.decode("utf-8", "replace"))

@@ -6,7 +6,10 @@ Both are size-bounded; what cannot be read raises ManifestError with the line a 
 from __future__ import annotations
 
 import ast
+import errno
+import os
 import re
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 from xml.parsers import expat
@@ -21,11 +24,20 @@ class ManifestError(Exception):
     """A package.xml or setup.py that cannot be read, or that its tools would refuse."""
 
 
+def read_regular(path: Path, limit: int) -> bytes:
+    """At most ``limit`` bytes of a regular file: opened without blocking and checked once open, so a FIFO or device
+    named package.xml or CMakeLists.txt is never read (OSError for those, as for a missing file)."""
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+    with os.fdopen(fd, "rb") as handle:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            raise OSError(errno.EINVAL, "not a regular file")
+        return handle.read(limit)
+
+
 def read_bounded(path: Path) -> bytes:
     """The file's bytes, at most MAX_BYTES (ManifestError if unreadable or larger)."""
     try:
-        with open(path, "rb") as handle:
-            raw = handle.read(MAX_BYTES + 1)
+        raw = read_regular(path, MAX_BYTES + 1)
     except OSError as exc:
         raise ManifestError(f"{path.name} cannot be read ({exc.strerror}).") from None
     if len(raw) > MAX_BYTES:

@@ -14,7 +14,9 @@ from pathlib import Path
 from typing import Literal, TypedDict
 
 from grader.workspace import cmake
-from grader.workspace.manifest import Manifest, ManifestError, SetupPy, name_only, read_manifest, read_setup
+from grader.workspace.manifest import (
+    Manifest, ManifestError, SetupPy, name_only, read_manifest, read_regular, read_setup,
+)
 
 BuildType = Literal["catkin", "ament_python", "ament_cmake"]
 SKIPPED_DIRS = frozenset({"build", "devel", "install", "log", "logs", "__pycache__", "node_modules", "__MACOSX"})
@@ -108,8 +110,7 @@ def _build_type(manifest: Manifest, folder: Path) -> BuildType:
 def _mentions_ament(folder: Path) -> bool:
     """Whether CMakeLists.txt builds with ament (for a package.xml that does not say, or cannot be read)."""
     try:
-        with open(folder / "CMakeLists.txt", "rb") as handle:
-            return b"ament_cmake" in handle.read(cmake.MAX_BYTES)
+        return b"ament_cmake" in read_regular(folder / "CMakeLists.txt", cmake.MAX_BYTES)
     except OSError:
         return False
 
@@ -356,8 +357,7 @@ def read_package(folder: Path) -> Package | None:
 def package_name(folder: Path) -> str | None:
     """The ``<name>`` in ``folder/package.xml`` as text, or None (a cheap look that reads nothing else)."""
     try:
-        with open(folder / "package.xml", "rb") as handle:
-            return name_only(handle.read(65536))
+        return name_only(read_regular(folder / "package.xml", 65536))
     except OSError:
         return None
 
