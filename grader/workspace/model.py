@@ -350,8 +350,21 @@ def read_package(folder: Path) -> Package | None:
                               "would stop. Add the CMakeLists.txt of your package template.",)}
     else:
         parts = {}
-    parts["findings"] = manifest.findings + tuple(parts.get("findings", ()))
+    python, outside = _inside(folder, parts.get("python_packages", ()))
+    parts["python_packages"] = python
+    parts["findings"] = manifest.findings + tuple(parts.get("findings", ())) + tuple(
+        f"The Python package {item.name} is installed from outside the package {manifest.name} "
+        f"({item.folder}); the grader imports only modules inside the submission's packages: move it into "
+        f"{manifest.name}/." for item in outside)
     return Package(manifest.name, folder, build_type, manifest.depends, **parts)
+
+
+def _inside(folder: Path, items: tuple[PythonPackage, ...]) -> tuple[tuple[PythonPackage, ...], list[PythonPackage]]:
+    """The Python packages that lie inside the package's folder (links resolved), and those that do not: a node's
+    sandbox shows only the submission, never a folder of the grader's machine that a path or link leads to."""
+    base = folder.resolve()
+    inside = tuple(item for item in items if base in item.folder.resolve().parents)
+    return inside, [item for item in items if item not in inside]
 
 
 def package_name(folder: Path) -> str | None:

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from grader.runtime.client_library import client_library, package_findings
+from grader.runtime.client_library import client_library, import_roots, package_findings
 from grader.workspace import cmake, read_package, read_workspace
 from grader.workspace.manifest import ManifestError, read_manifest, read_setup
 
@@ -50,3 +50,18 @@ def test_a_script_whose_package_is_broken_still_gets_a_client_library(tmp_path: 
     script = folder / "scripts" / "move_circle.py"
     assert client_library(script) == "ros2"
     assert any('missing ending ")"' in f for f in package_findings(script, None))
+
+
+def test_python_packages_outside_the_package_are_not_imported(tmp_path: Path) -> None:
+    outside = tmp_path / "grader_secrets"
+    (outside / "secrets").mkdir(parents=True)
+    (outside / "secrets" / "__init__.py").write_text("")
+    text = (f"project(p)\nfind_package(ament_cmake_python REQUIRED)\n"
+            f"ament_python_install_package(secrets PACKAGE_DIR {outside / 'secrets'})\nament_package()\n")
+    folder = cmake_package(tmp_path / "p", "p", text)
+    (folder / "p_modules").rename(folder / "real_tools")
+    (folder / "p_modules").symlink_to(outside / "secrets")
+    package = read_package(folder)
+    assert package.python_packages == ()
+    assert len([f for f in package.findings if "from outside the package p" in f]) == 1
+    assert import_roots(folder / "scripts" / "move_circle.py") == ()
