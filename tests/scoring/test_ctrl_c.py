@@ -1,0 +1,218 @@
+"""Issue 33: a run that ends with Ctrl+C after the task is done earns what the same run without Ctrl+C earns, for every
+built-in criterion; what the node does after Ctrl+C (here the worst: it drives on, too fast, prints nonsense and hits
+a wall) is judged by the shutdown criteria alone."""
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from functools import cache
+
+import pytest
+from scoring_synth import Segment, commands, path, run, square_segments
+
+from grader.metrics import OutputLine, RunData, RunInfo
+from grader.metrics.motion import wrap
+from grader.metrics.wall_hits import WARNING
+from grader.report import CriterionResult
+from grader.rubric import Scenario, load_rubrics
+from grader.scoring import score_task
+
+RUBRICS = load_rubrics()
+CENTRE = 5.544445  # turtlesim spawns turtle1 here
+AFTER_S = 2.0  # recorded after the Ctrl+C, as a scenario's duration does
+# What the node does after Ctrl+C: drives on faster than the robot may, turning, or stops dead without a zero command;
+# either way it prints wrong poses and the turtle hits a wall.
+AFTER: dict[str, tuple[list[Segment], list[Segment]]] = {  # (motion, commands)
+    "drives": ([(AFTER_S, 2.0, 1.0)], [(AFTER_S, 2.0, 3.0)]),
+    "stops": ([(AFTER_S, 0.0, 0.0)], []),
+}
+
+
+def _rest_until(segments: list[Segment], end: float) -> list[Segment]:
+    """``segments`` cut at ``end`` seconds, or padded with rest up to it."""
+    out, elapsed = [], 0.0
+    for d, v, w in segments:
+        if elapsed + d >= end:
+            return [*out, (end - elapsed, v, w)]
+        out.append((d, v, w))
+        elapsed += d
+    return [*out, (end - elapsed, 0.0, 0.0)]
+
+
+def _to(x: float, y: float, yaw: float, points: list[tuple[float, float]], v: float, w: float) -> list[Segment]:
+    """Turn on the spot towards each point in turn, then drive straight to it."""
+    segs: list[Segment] = []
+    for px, py in points:
+        turn = float(wrap(math.atan2(py - y, px - x) - yaw))
+        if abs(turn) > 1e-9:
+            segs.append((abs(turn) / w, 0.0, math.copysign(w, turn)))
+        segs.append((math.hypot(px - x, py - y) / v, v, 0.0))
+        x, y, yaw = px, py, math.atan2(py - y, px - x)
+    return segs
+
+
+def _start(rubric_robot: str, s: Scenario) -> tuple[float, float, float]:
+    p = s.initial_pose
+    if rubric_robot == "turtlesim" and (p.x, p.y, p.yaw) == (0.0, 0.0, 0.0):
+        return CENTRE, CENTRE, 0.0
+    return p.x, p.y, p.yaw
+
+
+def _param(s: Scenario, name: str, default: float | bool) -> float | bool:
+    return s.params.get(name, default)
+
+
+def _motion(task: str, s: Scenario, x: float, y: float, yaw: float) -> list[Segment]:
+    """A correct node's motion in scenario ``s`` of ``task``, from its start pose."""
+    if task in ("move_square", "square_odom_launch"):
+        return square_segments(loops=2)
+    if task == "mover_odom_square":
+        return square_segments(loops=1)
+    if task == "mover_timed_square":
+        return square_segments(loops=6, v=0.25)  # driving a side (not turning) when Ctrl+C comes at 80 s
+    if task == "move_circle":
+        return [(s.duration, 0.1, 0.2)]
+    if task in ("move_distance", "move_distance_launch"):
+        return [(((3.02 if task == "move_distance" else 2.02) - x) / 0.2, 0.2, 0.0)]
+    if task == "husky_distance":
+        return [(10.2 / 0.8, 0.8, 0.0)]
+    if task == "figure_of_eight":  # two 1 m loops of 30 s each, anticlockwise then clockwise
+        v, w = math.pi / 30.0, 2.0 * math.pi / 30.0
+        return [(30.0, v, w), (30.0, v, -w)]
+    if task == "odom_subscriber":
+        return [(1.0, 0.0, 0.0), (6.0, 0.1, 0.5), (8.0, 0.1, -0.5)]
+    if task == "turtle_circle":
+        return [(s.duration, 2.0, 1.0)]
+    if task == "turtle_clean":  # to the lower left corner, then rows 1 m apart (the turtle's width)
+        rows = [p for k in range(11) for p in ((0.5, 0.5 + k), (10.5, 0.5 + k))[:: 1 if k % 2 == 0 else -1]]
+        return _to(x, y, yaw, rows, 2.0, 2.0)
+    if task == "turtle_goal":
+        return _to(x, y, yaw, [(float(_param(s, "goal_x", 0.0)), float(_param(s, "goal_y", 0.0)))], 1.0, 1.0)
+    if task in ("turtle_move", "turtle_launch", "turtle_rotate"):
+        if "angle_deg" in s.params:
+            turn = math.radians(float(s.params["angle_deg"]))
+            return [(turn, 0.0, -1.0 if s.params.get("clockwise") else 1.0)]
+        distance = float(_param(s, "distance", 2.0))
+        return [(distance, 1.0 if _param(s, "forward", True) else -1.0, 0.0)]
+    if task == "turtle_triangle":
+        return [(2.0, 1.0, 0.0), (math.radians(120.0), 0.0, 1.0)] * 2 + [(2.0, 1.0, 0.0)]
+    raise AssertionError(f"no correct motion for {task}")
+
+
+def _lines(task: str, odom, t_end: float) -> list[OutputLine]:
+    """What a correct node prints before ``t_end``."""
+    keep = [i for i in range(len(odom)) if odom.t[i] + 0.002 < t_end]
+    if task in ("odom_subscriber", "square_odom_launch"):  # every third /odom message, 2 ms after it
+        return [OutputLine(float(odom.t[i]) + 0.002, "stdout",
+                           f"x = {odom.x[i]:.3f}, y = {odom.y[i]:.3f}, yaw = {odom.yaw[i]:.3f}") for i in keep[::3]]
+    if task == "figure_of_eight":  # once a second, relative to the start pose, in the start frame
+        c, s = math.cos(odom.yaw[0]), math.sin(odom.yaw[0])
+        out = []
+        for i in keep[::30]:
+            dx, dy = odom.x[i] - odom.x[0], odom.y[i] - odom.y[0]
+            yaw = math.degrees(float(wrap(odom.yaw[i] - odom.yaw[0])))
+            text = f"x={c * dx + s * dy:.2f} [m], y={-s * dx + c * dy:.2f} [m], yaw={yaw:.1f} [degrees]."
+            out.append(OutputLine(float(odom.t[i]) + 0.002, "rosout", text, "INFO"))
+        return out
+    return []
+
+
+@cache
+def _scores(task: str, after: str | None, announced: bool = True) -> dict[str, CriterionResult]:
+    """Every criterion of ``task`` scored on a correct node's runs up to ``T`` (the scenario's Ctrl+C, else its end).
+    ``after`` None: the recording ends at ``T`` without Ctrl+C; else a Ctrl+C at ``T`` and 2 s of ``AFTER[after]``,
+    recorded (``announced``) as the run's Ctrl+C or not, so that all of it is judged."""
+    rubric = RUBRICS[task]
+    runs = {}
+    for s in rubric.scenarios:
+        end = s.shutdown_at if s.shutdown_at is not None else s.duration
+        x, y, yaw = _start(rubric.robot, s)
+        segs = _rest_until(_motion(task, s, x, y, yaw), end)
+        t0 = s.start_time
+        lines = _lines(task, path(segs, x, y, yaw, t0), t0 + end)
+        if after is None:
+            runs[s.name] = run(segs, x0=x, y0=y, yaw0=yaw, t0=t0, lines=lines,
+                               info=RunInfo(exit_code=0, status="exited", ended_s=t0 + end))
+            continue
+        shutdown = t0 + end
+        later = [OutputLine(shutdown + 0.5, "rosout", f"{WARNING} Clamping from [x=11.2, y=3.0]", "WARN")]
+        for k in range(20):  # wrong poses at 10 Hz, printed and logged
+            later += [OutputLine(shutdown + 0.1 * k, "stdout", "x = 99.000, y = -99.000, yaw = 9.000"),
+                      OutputLine(shutdown + 0.1 * k, "rosout", "x=99 [m], y=-99 [m], yaw=999 [degrees].", "ERROR")]
+        motion, sent = AFTER[after]
+        info = RunInfo(shutdown_requested_s=shutdown if announced else None, exit_code=0, status="exited",
+                       ended_s=shutdown + AFTER_S)
+        data = run(segs + motion, x0=x, y0=y, yaw0=yaw, t0=t0, lines=lines + later, info=info,
+                   shutdown_at=end if announced else None)
+        runs[s.name] = replace(data, commands=commands(segs + sent, t0))
+    return {c.id: c for c in score_task(rubric, runs).criteria}
+
+
+CRITERIA = [(task, c.id, after) for task, rubric in sorted(RUBRICS.items()) for c in rubric.criteria
+            if not c.metric_def.needs_shutdown for after in AFTER]
+
+
+@pytest.mark.parametrize("task, criterion, after", CRITERIA, ids=["-".join(case) for case in CRITERIA])
+def test_ctrl_c_after_the_task_changes_no_credit(task: str, criterion: str, after: str) -> None:
+    plain, interrupted = _scores(task, None)[criterion], _scores(task, after)[criterion]
+    assert plain.score == plain.max_score, plain.feedback  # a correct run: the comparison could fail
+    assert interrupted.score == plain.score, interrupted.feedback
+
+
+def test_every_built_in_criterion_but_the_shutdown_ones_is_compared() -> None:
+    shutdown = {(t, c.id) for t, r in RUBRICS.items() for c in r.criteria if c.metric_def.needs_shutdown}
+    assert {(t, c.id) for t, r in RUBRICS.items() for c in r.criteria} == {(t, c) for t, c, _ in CRITERIA} | shutdown
+    assert {c for _, c in shutdown} == {"shutdown_stop"}
+
+
+@pytest.mark.parametrize("task, criterion, after", [
+    ("turtle_circle", "keeps_moving", "stops"), ("move_distance", "stays_stopped", "drives"),
+    ("move_square", "two_loop_stop", "drives"), ("turtle_clean", "no_wall_hit", "drives"),
+    ("turtle_move", "stops", "drives"), ("move_circle", "velocity_limits", "drives"),
+    ("figure_of_eight", "stop_position", "drives"), ("turtle_goal", "reaches_goal", "drives"),
+    ("odom_subscriber", "pose_output", "stops"), ("figure_of_eight", "log_values", "stops"),
+    ("turtle_rotate", "angle", "drives"), ("turtle_triangle", "stops", "drives"),
+])
+def test_what_came_after_ctrl_c_would_cost_credit_if_it_were_judged(task: str, criterion: str, after: str) -> None:
+    unannounced = _scores(task, after, announced=False)[criterion]
+    assert unannounced.score < unannounced.max_score
+
+
+def _turtle_circle(ctrl_c_at: float | None, stops_after: float) -> RunData:
+    """turtle_circle's node driving a 2 m circle; it stops ``stops_after`` s after the Ctrl+C (turtlesim's timeout)."""
+    t_end = 15.0
+    driven = t_end if ctrl_c_at is None else ctrl_c_at + stops_after
+    segs = [(driven, 2.0, 1.0), (t_end + 2.0 - driven, 0.0, 0.0)]
+    info = RunInfo() if ctrl_c_at is None else RunInfo(shutdown_requested_s=ctrl_c_at, ended_s=ctrl_c_at)
+    return run(segs, x0=CENTRE, y0=CENTRE, command_segments=[(ctrl_c_at or t_end, 2.0, 1.0)], info=info)
+
+
+def test_a_circle_stopped_by_ctrl_c_kept_moving_until_then() -> None:
+    metric = RUBRICS["turtle_circle"].criteria[1].metric_def
+    m = metric.judge(_turtle_circle(ctrl_c_at=13.0, stops_after=1.0), metric.params())
+    assert m["moving_at_end"] is True and m["how"] == "commanding"
+    assert m["judged_until_s"] == 13.0 and m["judged_until_ctrl_c"] is True
+
+
+def test_a_move_cut_by_ctrl_c_is_judged_as_it_was_at_ctrl_c() -> None:
+    # turtle_goal's node is still driving to its goal when Ctrl+C comes; what turtlesim's timeout does after it
+    # (the turtle stops a second later) is no stop of the node's.
+    metric = RUBRICS["turtle_goal"].criteria[1].metric_def
+    m = metric.judge(_turtle_circle(ctrl_c_at=6.0, stops_after=1.0), metric.params())
+    assert m["how"] == "commanding" and m["stop_credit"] == 0.0
+
+
+def test_a_run_without_ctrl_c_is_judged_to_its_end() -> None:
+    metric = RUBRICS["turtle_circle"].criteria[1].metric_def
+    m = metric.judge(_turtle_circle(ctrl_c_at=None, stops_after=0.0), metric.params())
+    assert m["judged_until_ctrl_c"] is False and m["judged_until_s"] == pytest.approx(17.0, abs=0.04)
+
+
+def test_shutdown_criteria_still_see_what_came_after_ctrl_c() -> None:
+    metric = RUBRICS["move_circle"].criteria[-1].metric_def
+    assert metric.needs_shutdown
+    data = run([(20.0, 0.1, 0.2), (5.0, 0.1, 0.2)], command_segments=[(20.0, 0.1, 0.2)], shutdown_at=20.0)
+    m = metric.judge(data, metric.params())
+    assert m["moving_at_end"] is True and m["observed_s"] == pytest.approx(5.0, abs=0.05)
+    assert "judged_until_s" not in m
+
