@@ -35,13 +35,19 @@ WAYS = {
 }
 
 
+# Measured quantities come from numpy and BLAS kernels picked per CPU (a sum's order, FMA): the same value to about
+# 1e-15 relative, not always to the bit. Points, verdicts and feedback must be the same.
+MEASURED_REL = 1e-9
+
+
 @dataclass
 class Comparison:
     """Two checks of the same submission, file by file and criterion by criterion."""
 
     same_files: list[str] = field(default_factory=list)
     different_files: list[str] = field(default_factory=list)
-    different_grades: list[str] = field(default_factory=list)
+    different_grades: list[str] = field(default_factory=list)  # points, pass/fail, feedback, task status
+    last_bits: list[str] = field(default_factory=list)  # measured values within MEASURED_REL, not the same bits
 
 
 def check(target: Path, out: Path, way: str, tasks: list[str]) -> float:
@@ -57,16 +63,27 @@ def check(target: Path, out: Path, way: str, tasks: list[str]) -> float:
     return time.monotonic() - started
 
 
-def _grades(report: Path) -> dict[str, object]:
-    """Every task's and criterion's score, measured values and feedback, keyed by where they are."""
+def _grades(report: Path) -> tuple[dict[str, object], dict[str, object]]:
+    """Every task's and criterion's points, verdict and feedback, and apart from them every measured value, keyed by
+    where they are."""
     data = json.loads(report.read_text())
     grades: dict[str, object] = {"score": data["score"], "max_score": data["max_score"]}
+    measured: dict[str, object] = {}
     for task in data["tasks"]:
         grades[f"{task['id']}.score"] = (task["score"], task["max_score"], task["status"])
         for criterion in task["criteria"]:
-            for key in ("score", "passed", "feedback", "measured"):
-                grades[f"{task['id']}.{criterion['id']}.{key}"] = criterion[key]
-    return grades
+            where = f"{task['id']}.{criterion['id']}"
+            for key in ("score", "passed", "feedback"):
+                grades[f"{where}.{key}"] = criterion[key]
+            for key, value in criterion["measured"].items():
+                measured[f"{where}.measured.{key}"] = value
+    return grades, measured
+
+
+def _close(first: object, second: object) -> bool:
+    if isinstance(first, float) and isinstance(second, float):
+        return abs(first - second) <= MEASURED_REL * max(abs(first), abs(second))
+    return first == second
 
 
 def compare(first: Path, second: Path) -> Comparison:
@@ -78,8 +95,12 @@ def compare(first: Path, second: Path) -> Comparison:
             other = second / name
             same = other.is_file() and other.read_bytes() == path.read_bytes()
             (result.same_files if same else result.different_files).append(name)
-    ours, theirs = _grades(first / "report.json"), _grades(second / "report.json")
+    (ours, our_measures), (theirs, their_measures) = _grades(first / "report.json"), _grades(second / "report.json")
     result.different_grades = [key for key in sorted(ours.keys() | theirs.keys()) if ours.get(key) != theirs.get(key)]
+    for key in sorted(our_measures.keys() | their_measures.keys()):
+        mine, other = our_measures.get(key), their_measures.get(key)
+        if mine != other:
+            (result.last_bits if _close(mine, other) else result.different_grades).append(key)
     return result
 
 
@@ -94,7 +115,8 @@ def main() -> int:
     if "haswell" in ways and QEMU is None:
         print("qemu-x86_64 not found (Debian: apt install qemu-user): the haswell way is left out")
         ways.remove("haswell")
-    print(f"{'submission':40} {'way':15} {'wall s':>7} {'same files':>10} {'differ':>6} {'grades differ':>13}")
+    print(f"{'submission':40} {'way':15} {'wall s':>7} {'same files':>10} {'differ':>6} {'grades differ':>13} "
+          f"{'last bits':>9}")
     for target in args.targets:
         base = args.out / target.name
         for way in ways:
@@ -104,11 +126,13 @@ def main() -> int:
                 continue
             result = compare(base / ways[0], base / way)
             print(f"{target.name:40} {way:15} {wall:7.1f} {len(result.same_files):10} "
-                  f"{len(result.different_files):6} {len(result.different_grades):13}")
+                  f"{len(result.different_files):6} {len(result.different_grades):13} {len(result.last_bits):9}")
             for name in result.different_files:
                 print(f"    differs: {name}")
             for key in result.different_grades:
                 print(f"    grade differs: {key}")
+            for key in result.last_bits:
+                print(f"    measured value differs in its last bits: {key}")
     return 0
 
 

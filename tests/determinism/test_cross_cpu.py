@@ -39,6 +39,17 @@ def test_the_grades_are_the_same_on_both_cpus(two_cpus) -> None:
     assert cross_cpu.compare(*two_cpus).different_grades == []
 
 
+def test_measured_values_in_their_last_bits_are_told_apart_from_different_grades(tmp_path) -> None:
+    for name, radius in (("a", 0.49995657394030524), ("b", 0.4999565739403053), ("c", 0.51)):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "report.json").write_text(json.dumps({"score": 10, "max_score": 10, "tasks": [
+            {"id": "move_circle", "score": 10, "max_score": 10, "status": "graded", "criteria": [
+                {"id": "radius", "score": 4, "passed": True, "feedback": "ok", "measured": {"radius": radius}}]}]}))
+    last_bit = cross_cpu.compare(tmp_path / "a", tmp_path / "b")
+    assert (last_bit.last_bits, last_bit.different_grades) == (["move_circle.radius.measured.radius"], [])
+    assert cross_cpu.compare(tmp_path / "a", tmp_path / "c").different_grades == ["move_circle.radius.measured.radius"]
+
+
 def test_the_comparison_sees_one_changed_bit_and_one_changed_grade(two_cpus, tmp_path) -> None:
     native, _ = two_cpus
     altered = tmp_path / "altered"
