@@ -228,9 +228,13 @@ class _CMakeReading:
         elif folder.name == args[0]:
             self.python.append(PythonPackage(args[0], folder))
 
-    def interfaces(self, command: str, args: list[str]) -> None:
+    def interfaces(self, command: str, args: list[str], line: int) -> None:
         if command == "rosidl_generate_interfaces":
-            self.listed.update(self.path(a) for a in args[1:] if a.endswith((".msg", ".srv", ".action", ".idl")))
+            listed = [a for a in args[1:] if a.endswith((".msg", ".srv", ".action", ".idl"))]
+            self.listed.update(self.path(a) for a in listed)
+            self.findings += [f"CMakeLists.txt line {line}: `colcon build` would stop with \"rosidl_generate_interfaces() "
+                              f"the passed file '{a}' doesn't exist\". Fix the name or create {a}."
+                              for a in listed if not self.path(a).is_file()]
             return
         upper = [a.upper() for a in args]
         default = {"add_message_files": "msg", "add_service_files": "srv", "add_action_files": "action"}[command]
@@ -262,7 +266,7 @@ class _CMakeReading:
                 self.python.append(PythonPackage(module.stem, module))
             elif command.name in ("rosidl_generate_interfaces", "add_message_files", "add_service_files",
                                   "add_action_files"):
-                self.interfaces(command.name, args)
+                self.interfaces(command.name, args, command.line)
         if self.catkin:
             return
         project = self.vars.values.get("PROJECT_NAME")

@@ -261,3 +261,12 @@ def test_a_malformed_package_xml_of_an_ament_cmake_package_stays_ament_cmake(tmp
     folder = cmake_package(tmp_path / "p", "p")
     (folder / "package.xml").write_text("<package><name>p</name><export></package>\n")
     assert read_package(folder).build_type == "ament_cmake"
+
+
+def test_an_interface_listed_but_missing(tmp_path: Path) -> None:
+    text = TEMPLATE.format(name="p").replace(
+        "ament_package()", 'rosidl_generate_interfaces(${PROJECT_NAME} "srv/Gone.srv")\nament_package()')
+    folder = cmake_package(tmp_path / "p", "p", text,
+                           extra="<member_of_group>rosidl_interface_packages</member_of_group>")
+    [finding] = read_package(folder).findings
+    assert "line 16" in finding and "the passed file 'srv/Gone.srv' doesn't exist" in finding
