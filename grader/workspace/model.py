@@ -232,9 +232,9 @@ class _CMakeReading:
         if command == "rosidl_generate_interfaces":
             listed = [a for a in args[1:] if a.endswith((".msg", ".srv", ".action", ".idl"))]
             self.listed.update(self.path(a) for a in listed)
-            self.findings += [f"CMakeLists.txt line {line}: `colcon build` would stop with \"rosidl_generate_interfaces() "
-                              f"the passed file '{a}' doesn't exist\". Fix the name or create {a}."
-                              for a in listed if not self.path(a).is_file()]
+            self.findings += [f"CMakeLists.txt line {line}: `colcon build` would stop with "
+                              f"\"rosidl_generate_interfaces() the passed file '{a}' doesn't exist\". Fix the name "
+                              f"or create {a}." for a in listed if not self.path(a).is_file()]
             return
         upper = [a.upper() for a in args]
         default = {"add_message_files": "msg", "add_service_files": "srv", "add_action_files": "action"}[command]
