@@ -660,11 +660,27 @@ def _add_rubric_options(parser: argparse.ArgumentParser) -> None:
                         help="a folder of instructor rubric files (repeatable)")
 
 
+# The first screen a newcomer sees (`rosgrade`, `rosgrade -h`): what it grades, and each command with an example.
+DESCRIPTION = """Grade ROS robot nodes written with rospy (ROS 1) or rclpy (ROS 2) against a
+deterministic simulation of a TurtleBot3, TurtleBot2 or Husky, or of turtlesim.
+Each run is recorded (MCAP), scored on the task's rubric and explained in a
+report: report.html replays every run."""
+EXAMPLES = """one example per command:
+  rosgrade check ~/catkin_ws/src/my_pkg          grade one submission (a .py, a
+                                                 package, src/ folder or .zip)
+  rosgrade batch submissions/ --out grades/      grade a class
+  rosgrade score run.mcap --task move_circle     score recordings again
+  rosgrade tasks                                 list the tasks (rubrics)
+  rosgrade bench                                 speed figures on this machine
+  rosgrade gradescope-package --task move_circle the Gradescope autograder zip
+  rosgrade launch my_pkg/launch/go.launch --nodes   read a launch file
+  rosgrade rubric check my_course/spiral.toml    check a rubric file"""
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser for every subcommand."""
-    parser = argparse.ArgumentParser(
-        prog="rosgrade", description="Grade ROS 1 rospy robot nodes against a deterministic simulation."
-    )
+    parser = argparse.ArgumentParser(prog="rosgrade", description=DESCRIPTION, epilog=EXAMPLES,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"rosgrade {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
@@ -768,7 +784,11 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point: run a subcommand and turn user-facing errors into one line and exit code 2."""
-    args = build_parser().parse_args(argv)
+    parser = build_parser()
+    if not (sys.argv[1:] if argv is None else argv):  # no command: the first screen, not an argparse error
+        parser.print_help()
+        return EXIT_ERROR
+    args = parser.parse_args(argv)
     try:
         return int(args.handler(args))
     except CliError as exc:  # messages quote paths and names a student chose: no terminal controls
