@@ -194,6 +194,8 @@ class _CMakeReading:
         upper = [a.upper() for a in args]
         destination = args[upper.index("DESTINATION") + 1] if "DESTINATION" in upper[:-1] else ""
         if kind in ("PROGRAMS", "FILES"):
+            # RENAME gives the one file its installed name, which `ros2 run` then takes
+            rename = args[upper.index("RENAME") + 1] if "RENAME" in upper[:-1] and len(items) == 1 else None
             for item in items:
                 path = self.path(item)
                 if not path.is_file():
@@ -202,7 +204,8 @@ class _CMakeReading:
                         f"`colcon build` would stop with 'file INSTALL cannot find \"{path.name}\"'. Fix the path "
                         "or remove the line.")
                 elif self.bin_destination(destination):
-                    self.executables.append(Executable(path.name, path, executable_install=kind == "PROGRAMS"))
+                    self.executables.append(Executable(rename or path.name, path,
+                                                       executable_install=kind == "PROGRAMS"))
         elif kind == "DIRECTORY":
             for item in items:
                 path = self.path(item)

@@ -270,3 +270,9 @@ def test_an_interface_listed_but_missing(tmp_path: Path) -> None:
                            extra="<member_of_group>rosidl_interface_packages</member_of_group>")
     [finding] = read_package(folder).findings
     assert "line 16" in finding and "the passed file 'srv/Gone.srv' doesn't exist" in finding
+
+
+def test_a_program_installed_under_another_name(tmp_path: Path) -> None:
+    text = TEMPLATE.format(name="p").replace("  DESTINATION", "  RENAME circle\n  DESTINATION")
+    workspace = read_workspace(cmake_package(tmp_path / "p", "p", text))
+    assert workspace.executable("p", "circle").script.name == "move_circle.py"
