@@ -26,7 +26,7 @@ from grader.report import SubmissionReport
 from grader.reports.folder import ReportFiles
 from grader.reports.table import print_report
 from grader.reports.escape import one_line, plain
-from grader.reports.text import fmt_number, fmt_points, foxglove_help, percent
+from grader.reports.text import fmt_number, fmt_points, foxglove_help, percent, watch_first_text
 
 EXIT_OK = 0
 EXIT_BELOW_THRESHOLD = 1
@@ -262,7 +262,7 @@ def _print_footer(console: Console, report: SubmissionReport, files: ReportFiles
     lines += [f"Note: {note}" for note in files.notes]
     recordings = [r for t in report.tasks for r in t.recordings]
     if recordings:
-        lines += ["Recordings: " + ", ".join(recordings), *foxglove_help(recordings[0])]
+        lines += [watch_first_text(report), "Recordings: " + ", ".join(recordings), *foxglove_help(recordings[0])]
     for line in lines:
         console.print(Text(plain(line)))
 

@@ -12,7 +12,7 @@ from grader.report import SubmissionReport
 from grader.reports.cause import criterion_feedback, lead_lines
 from grader.reports.escape import markdown, one_line
 from grader.reports.markdown import render_markdown
-from grader.reports.text import fmt_score
+from grader.reports.text import fmt_score, watch_first
 
 RESULT_OUTPUT = "result"
 # The official reporter's log shows passed tests / tests × max_score, while Classroom records the sum of the tests'
@@ -129,7 +129,10 @@ def step_summary(report: SubmissionReport, artifact: str = "rosgrade-report") ->
     unit = point_unit(report)
     rounding = "" if unit == 1.0 and report.score == round(report.score) else \
         f" Classroom records the points in steps of {fmt_score(unit)}."
-    return text + f"\nPlots of your robot's path and commands are in `report.html` in {where}.{rounding}\n"
+    first = watch_first(report)
+    watch = " " + markdown(f"Watch first: {first[0].id}, scenario '{first[1]}'.", line_start=False) if first else ""
+    return text + (f"\nA replay of each run, and plots of your robot's path and commands, are in `report.html` in "
+                   f"{where}.{watch}{rounding}\n")
 
 
 def write_summary(path: Path, report: SubmissionReport) -> None:

@@ -1,4 +1,4 @@
-"""Writes a submission's report folder: report.json (the contract), report.md, report.html and the plot PNGs."""
+"""Writes a submission's report folder: report.json (the contract), report.md, report.html with its replays, the plots."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -10,7 +10,8 @@ from grader.reports.advice import with_advice
 from grader.reports.files import write_atomic
 from grader.reports.html import render_html
 from grader.reports.markdown import render_markdown
-from grader.reports.plots import Plot, report_plots
+from grader.reports.plots import Plot, report_media
+from grader.reports.replay import Replay
 
 PLOTS_DIR = "plots"
 
@@ -26,6 +27,7 @@ class ReportFiles:
     html: Path
     plots: list[Plot] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    replays: list[Replay] = field(default_factory=list)
 
 
 def write_report_folder(report: SubmissionReport, folder: Path, with_plots: bool = True,
@@ -35,17 +37,18 @@ def write_report_folder(report: SubmissionReport, folder: Path, with_plots: bool
     with timing.stage("advice"):
         report = with_advice(report) if with_plots else report
     with timing.stage("plots"):
-        plots, notes = report_plots(report, jobs=jobs) if with_plots else ([], [])
+        plots, replays, notes = report_media(report, jobs=jobs) if with_plots else ([], [], [])
     with timing.stage("report files"):
-        return _write(report, folder, plots, notes)
+        return _write(report, folder, plots, notes, replays)
 
 
-def _write(report: SubmissionReport, folder: Path, plots: list[Plot], notes: list[str]) -> ReportFiles:
+def _write(report: SubmissionReport, folder: Path, plots: list[Plot], notes: list[str],
+           replays: list[Replay]) -> ReportFiles:
     for plot in plots:
         write_atomic(folder / PLOTS_DIR / plot.filename, plot.png)
     markdown = write_atomic(
         folder / "report.md", render_markdown(report, plots, lambda p: f"{PLOTS_DIR}/{p.filename}", notes)
     )
-    html = write_atomic(folder / "report.html", render_html(report, plots, notes))
+    html = write_atomic(folder / "report.html", render_html(report, plots, notes, replays))
     json_path = write_atomic(folder / "report.json", report.model_dump_json(indent=2))
-    return ReportFiles(folder, report, json_path, markdown, html, plots, notes)
+    return ReportFiles(folder, report, json_path, markdown, html, plots, notes, replays)

@@ -3,12 +3,17 @@ from __future__ import annotations
 
 import base64
 from collections.abc import Sequence
+from functools import cache
+from pathlib import Path
 
 from grader.report import SubmissionReport, TaskReport
 from grader.reports.cause import criterion_feedback, criterion_measured, lead_lines, noticed
 from grader.reports.escape import html_text as escape
 from grader.reports.plots import Plot
-from grader.reports.text import NOTICED_HEADING, fmt_points, foxglove_help, percent
+from grader.reports.replay import Replay
+from grader.reports.text import NOTICED_HEADING, fmt_points, foxglove_help, percent, watch_first
+
+HERE = Path(__file__).parent
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:60rem;margin:2rem auto;padding:0 1rem;color:#222}
@@ -25,7 +30,48 @@ def data_uri(png: bytes) -> str:
     return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
 
 
-def _task_html(task: TaskReport, plots: Sequence[Plot]) -> list[str]:
+@cache
+def _asset(name: str) -> str:
+    """A file shipped beside this module (the replay's script and style), pasted into the page."""
+    return (HERE / name).read_text(encoding="utf-8")
+
+
+def _jump(task: TaskReport, criterion_id: str, scenario: str | None, replays: Sequence[Replay]) -> str:
+    """A link to the moment a criterion was decided, in the replay of the run that decided it."""
+    for replay in replays:
+        if replay.task == task.id and replay.scenario == scenario:
+            at = dict(replay.moments).get(criterion_id)
+            if at is not None:
+                return (f'<br><a class="rp-jump" href="#{replay.anchor}" data-replay="{replay.anchor}" '
+                        f'data-t="{at:.2f}">▶ watch at {at:.2f} s ({escape(scenario)})</a>')
+    return ""
+
+
+def _replay_html(replay: Replay, first: bool) -> str:
+    """One replay: the picture, what the node was doing then, and the controls (the script makes them work)."""
+    label = f"{replay.task}, scenario {replay.scenario}"
+    heading = f"Replay of scenario '{escape(replay.scenario)}'" + (" (watch this one first)" if first else "")
+    data = replay.data.replace("<", "\\u003c")  # no "</script>" inside the script element
+    return f"""<section class="replay" id="{replay.anchor}" aria-label="Replay of {escape(label)}">
+<h3>{heading}</h3>
+<div class="rp-main"><canvas class="rp-view" width="480" height="480" role="img" aria-label="The world seen from above at the chosen time"></canvas>
+<div class="rp-side"><p class="rp-pose" aria-live="polite"></p><p class="rp-command"></p>
+<p><b>Your node's output until then</b></p><ol class="rp-log" aria-label="Output lines until the chosen time"></ol></div></div>
+<div class="rp-controls"><button type="button" class="rp-play" aria-label="Play">▶ Play</button>
+<span role="group" aria-label="Speed"><button type="button" class="rp-speed" data-speed="1" aria-pressed="true">1×</button>
+<button type="button" class="rp-speed" data-speed="4" aria-pressed="false">4×</button>
+<button type="button" class="rp-speed" data-speed="16" aria-pressed="false">16×</button></span>
+<div class="rp-timeline"><label for="{replay.anchor}-time">Time in the run</label>
+<input type="range" class="rp-time" id="{replay.anchor}-time" min="0" max="1" step="0.01" value="0">
+<div class="rp-marks" aria-hidden="true"></div></div><output class="rp-clock" for="{replay.anchor}-time"></output></div>
+<p class="rp-hint">Keys: space plays or pauses, ← and → step one second (with Shift, five).</p>
+<p><b>What happened</b> (click to see that moment)</p><ul class="rp-events"></ul>
+<script type="application/json" class="rp-data">{data}</script>
+</section>"""
+
+
+def _task_html(task: TaskReport, plots: Sequence[Plot], replays: Sequence[Replay] = (),
+               first: tuple[str, str] | None = None) -> list[str]:
     parts = [f"<h2>{escape(task.title or task.id)} <code>{escape(task.id)}</code>: {fmt_points(task.score, task.max_score)}</h2>"]
     parts += [f'<p class="warn">{escape(line)}</p>' for line in lead_lines(task)]
     if task.criteria:
@@ -34,7 +80,8 @@ def _task_html(task: TaskReport, plots: Sequence[Plot]) -> list[str]:
             css, sign = ("pass", "✔") if c.passed else ("fail", "✘")
             parts.append(
                 f'<tr><td class="{css}">{sign}</td><td>{escape(c.title or c.id)}</td>'
-                f"<td>{fmt_points(c.score, c.max_score)}</td><td>{escape(criterion_measured(task, c))}</td>"
+                f"<td>{fmt_points(c.score, c.max_score)}</td><td>{escape(criterion_measured(task, c))}"
+                f"{_jump(task, c.id, c.scenario, replays)}</td>"
                 f"<td>{escape(criterion_feedback(task, c))}</td></tr>"
             )
         parts.append("</table>")
@@ -42,6 +89,7 @@ def _task_html(task: TaskReport, plots: Sequence[Plot]) -> list[str]:
         parts.append(f"<p>{NOTICED_HEADING}:</p><ul>")
         parts += [f"<li>{escape(d)}</li>" for d in noticed(task)]
         parts.append("</ul>")
+    parts += [_replay_html(r, (r.task, r.scenario) == first) for r in replays if r.task == task.id]
     for plot in (p for p in plots if p.task == task.id):
         parts.append(
             f'<figure><img alt="{escape(plot.title)}" src="{data_uri(plot.png)}">'
@@ -52,13 +100,17 @@ def _task_html(task: TaskReport, plots: Sequence[Plot]) -> list[str]:
     return parts
 
 
-def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Sequence[str] = ()) -> str:
-    """The whole report as one HTML page."""
+def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Sequence[str] = (),
+                replays: Sequence[Replay] = ()) -> str:
+    """The whole report as one HTML page, with a replay of each run (its script and style inline: no network)."""
+    worst = watch_first(report) if replays else None
+    first = None if worst is None else (worst[0].id, worst[1])
     title = f"rosgrade report: {report.submission}"
     parts = [
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8">',
-        f"<title>{escape(title)}</title><style>{_CSS}</style></head><body>",
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
+        f"<title>{escape(title)}</title><style>{_CSS}{_asset('replay.css') if replays else ''}</style></head><body>",
         f"<h1>{escape(title)}</h1>",
         f'<p class="score">Score: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)</p>',
     ]
@@ -73,8 +125,12 @@ def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Seq
         for t in report.tasks
     ]
     parts.append("</table>")
+    if first is not None:
+        parts.append(f'<p>Watch first: <a href="#{next(r.anchor for r in replays if (r.task, r.scenario) == first)}">'
+                     f"the replay of {escape(first[0])}, scenario '{escape(first[1])}'</a>.</p>"
+                     if any((r.task, r.scenario) == first for r in replays) else "")
     for task in report.tasks:
-        parts += _task_html(task, plots)
+        parts += _task_html(task, plots, replays, first)
     if notes:
         parts.append("<h2>Notes</h2><ul>" + "".join(f"<li>{escape(n)}</li>" for n in notes) + "</ul>")
     recordings = [r for t in report.tasks for r in t.recordings]
@@ -82,5 +138,8 @@ def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Seq
         parts.append("<h2>Looking at a recording</h2><ul>")
         parts += [f"<li>{escape(line)}</li>" for line in foxglove_help(recordings[0])]
         parts.append("</ul>")
-    parts.append(f"<p><small>rosgrade {escape(report.rosgrade_version)}</small></p></body></html>")
+    parts.append(f"<p><small>rosgrade {escape(report.rosgrade_version)}</small></p>")
+    if replays:
+        parts.append(f"<script>{_asset('replay.js')}</script>")
+    parts.append("</body></html>")
     return "\n".join(parts) + "\n"

@@ -8,7 +8,7 @@ from grader.reports.cause import criterion_feedback, criterion_measured, lead_li
 from grader.reports.escape import markdown, markdown_cell, one_line
 from grader.reports.measured import describe
 from grader.reports.plots import Plot
-from grader.reports.text import NOTICED_HEADING, fmt_points, foxglove_help, is_public, percent
+from grader.reports.text import NOTICED_HEADING, fmt_points, foxglove_help, is_public, percent, watch_first_text
 
 HIDDEN_TEXT = "(details shown later)"
 
@@ -104,5 +104,6 @@ def render_markdown(
         lines += ["", "Notes:", ""] + [f"- {markdown_cell(n)}" for n in notes]
     recordings = [r for t in report.tasks for r in t.recordings]
     if recordings:
-        lines += ["", f"{h}# Looking at a recording", ""] + [f"- {markdown(line)}" for line in foxglove_help(recordings[0])]
+        lines += ["", f"{h}# Looking at a recording", "", f"- {markdown(watch_first_text(report))}"]
+        lines += [f"- {markdown(line)}" for line in foxglove_help(recordings[0])]
     return "\n".join(lines) + "\n"

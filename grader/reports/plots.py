@@ -15,6 +15,7 @@ from grader.metrics.run import OutputLine, RunData, Trajectory, param_changes, s
 from grader.report import SubmissionReport
 from grader.reports.canvas import canvas_figure
 from grader.reports.figures import Figures, level_changes, png, thin
+from grader.reports.replay import Replay, replay_of, scenario_times
 from sim.scenario import TURTLESIM
 
 DPI = 90  # the figures' natural size fits the HTML report's column
@@ -61,40 +62,54 @@ def shape_for(task_id: str) -> str | None:
 
 
 def report_plots(report: SubmissionReport, dpi: int = DPI, jobs: int = 1) -> tuple[list[Plot], list[str]]:
-    """Plots for every recording of a report, and a note for each recording that could not be read; ``jobs``
-    processes draw them (one share of the recordings each), in the same order and to the same bytes."""
-    wanted = [(task.id, path) for task in report.tasks for path in task.recordings]
-    if not wanted:
-        return [], []
-    from grader.workers import fork_map
-
-    shares = [wanted[i::jobs] for i in range(min(max(1, jobs), len(wanted)))]
-    drawn = fork_map(lambda share: _draw(share, dpi), shares, jobs)
-    by_recording = {item: result for share, results in zip(shares, drawn) for item, result in zip(share, results)}
-    plots = [plot for item in wanted for plot in by_recording[item][0]]
-    notes = [note for item in wanted if (note := by_recording[item][1])]
+    """Plots for every recording of a report, and a note for each recording that could not be read."""
+    plots, _, notes = report_media(report, dpi, jobs, replays=False)
     return plots, notes
 
 
-def _draw(share: list[tuple[str, str]], dpi: int) -> list[tuple[list[Plot], str | None]]:
-    """The plots of each (task id, recording path), or why that recording could not be plotted."""
+def report_media(report: SubmissionReport, dpi: int = DPI, jobs: int = 1,
+                 replays: bool = True) -> tuple[list[Plot], list[Replay], list[str]]:
+    """Plots and replays for every recording of a report, and a note for each recording that could not be read;
+    ``jobs`` processes draw them (one share of the recordings each), in the same order and to the same bytes."""
+    wanted = [(i, path) for i, task in enumerate(report.tasks) for path in task.recordings]
+    if not wanted:
+        return [], [], []
+    from grader.workers import fork_map
+
+    shares = [wanted[i::jobs] for i in range(min(max(1, jobs), len(wanted)))]
+    drawn = fork_map(lambda share: _draw(report, share, dpi, replays), shares, jobs)
+    by_recording = {item: result for share, results in zip(shares, drawn) for item, result in zip(share, results)}
+    plots = [plot for item in wanted for plot in by_recording[item][0]]
+    shown = [replay for item in wanted if (replay := by_recording[item][1]) is not None]
+    notes = [note for item in wanted if (note := by_recording[item][2])]
+    return plots, shown, notes
+
+
+def _draw(report: SubmissionReport, share: list[tuple[int, str]], dpi: int,
+          replays: bool) -> list[tuple[list[Plot], Replay | None, str | None]]:
+    """The plots and replay of each (task index, recording path), or why that recording could not be shown. Both
+    read one RunData, the series scoring read."""
     from grader.recording import Recording, RecordingError
 
     figures = Figures(dpi)  # built once, refilled for every recording
-    drawn: list[tuple[list[Plot], str | None]] = []
-    for task_id, path in share:
+    drawn: list[tuple[list[Plot], Replay | None, str | None]] = []
+    for index, path in share:
+        task, scenario = report.tasks[index], Path(path).stem
         try:
-            drawn.append((task_plots(task_id, Path(path).stem, Recording.open(Path(path)), dpi=dpi, figures=figures),
-                          None))
-        except RecordingError as exc:
-            drawn.append(([], f"{task_id}: could not plot {Path(path).name}: {exc}"))
+            recording = Recording.open(Path(path))
+            run = RunData.from_recording(recording, *scenario_times(recording))
+            plots = task_plots(task.id, scenario, recording, dpi=dpi, figures=figures, run=run)
+            drawn.append((plots, replay_of(task, scenario, recording, run) if replays else None, None))
+        except (RecordingError, ValueError) as exc:
+            drawn.append(([], None, f"{task.id}: could not plot {Path(path).name}: {exc}"))
     return drawn
 
 
 def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = DPI,
-               figures: Figures | None = None) -> list[Plot]:
+               figures: Figures | None = None, run: RunData | None = None) -> list[Plot]:
     """The figures for one recording: the turtlesim window (turtlesim runs), path, commands, and printed pose for
-    printing tasks. `figures` lets the recordings of one report share their figures."""
+    printing tasks. `figures` lets the recordings of one report share their figures; `run` is the recording as
+    RunData when it was read already (the turtlesim window redraws from it)."""
     plots = []
     figures = figures if figures is not None else Figures(dpi)
     metadata = recording.metadata or {}
@@ -107,9 +122,9 @@ def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = DPI,
     path = truth if has_truth else odom
     stop_s = shutdown_s(metadata)
     if turtlesim and path is not None and len(path.t):
-        figure = canvas_figure(RunData(odometry=Trajectory.of(path.t, path.x, path.y, path.yaw),
-                                       poses=turtle_poses(recording), service_calls=service_calls(recording),
-                                       param_changes=param_changes(recording)))
+        figure = canvas_figure(run or RunData(odometry=Trajectory.of(path.t, path.x, path.y, path.yaw),
+                                              poses=turtle_poses(recording), service_calls=service_calls(recording),
+                                              param_changes=param_changes(recording)))
         plots.append(Plot(task_id, scenario, "canvas", f"{task_id} ({scenario}): the turtlesim window at the end",
                           png(figure, dpi)))
     if path is not None and len(path.t):

@@ -79,3 +79,30 @@ def foxglove_help(recording: str) -> list[str]:
         "and /cmd_vel.linear.x (/cmd_vel.twist.linear.x for a ROS 2 TwistStamped); a Raw Messages panel on /rosout "
         "shows your node's log.",
     ]
+
+
+def watch_first(report: SubmissionReport) -> tuple[TaskReport, str] | None:
+    """The run to watch first in the report's replays: the scenario whose criteria lost the most points (the first
+    one in report order on a tie, the first run of a full-marks report)."""
+    runs = [(task, scenario) for task in report.tasks for scenario in _scenarios(task)]
+    if not runs:
+        return None
+
+    def lost(run: tuple[TaskReport, str]) -> float:
+        return sum(c.max_score - c.score for c in run[0].criteria if c.scenario == run[1])
+
+    return max(runs, key=lost)
+
+
+def watch_first_text(report: SubmissionReport) -> str:
+    """One line saying which replay in report.html to watch first ('' without recordings)."""
+    first = watch_first(report)
+    if first is None:
+        return ""
+    task, scenario = first
+    return f"Watch first: the replay of {task.id}, scenario '{scenario}', in report.html."
+
+
+def _scenarios(task: TaskReport) -> list[str]:
+    """The task's recorded scenarios, named as its recordings' files are (<scenario>.mcap)."""
+    return [recording.replace("\\", "/").rsplit("/", 1)[-1].rsplit(".", 1)[0] for recording in task.recordings]

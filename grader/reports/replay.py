@@ -1,0 +1,337 @@
+"""One run's replay for report.html: the recording cut down to what a page can animate (poses, pen lines, commands,
+output lines, events and the moments criteria were decided), as compact JSON that is the same for the same recording.
+
+It reads the series scoring read (the recording memo shares them) and turtlesim's pen through the picture's own
+replay (``grader.metrics.pen``), so the page shows what was scored.
+"""
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from grader.metrics.pen import _events, _move, _Params, _serve
+from grader.metrics.run import TURTLE_POSE_TOPIC, ParamChange, RunData, RunInfo, Trajectory
+from grader.metrics.wall_hits import WARNING as WALL_WARNING
+from grader.report import TaskReport
+from grader.reports.cause import criterion_measured
+from grader.reports.escape import plain
+from sim.scenario import TURTLESIM
+from sim.turtle_canvas import METER_PX, Canvas
+from sim.turtlesim import CANVAS_M, DEFAULT_BACKGROUND, DEFAULT_TURTLE, Turtle, background
+
+VIEW_PX = 480  # the replay's width on a wide screen: decimation keeps what differs by a pixel there
+MAX_LINES = 300  # output lines kept per run (the first ones: a loop printing forever repeats itself)
+MAX_TEXT = 160  # characters kept of one line
+COMMAND_BIN_S = 0.1  # commands shown at most this often
+MAX_GAP_S = 0.5  # a pose is kept at least this often, so the robot moves smoothly while it turns slowly
+TURN_RAD = 0.05  # and whenever it turned this much
+# Footprints (length, width in metres) of the robots, to draw them to scale; others get a 0.3 m square.
+FOOTPRINTS = {
+    "turtlebot3_burger": (0.138, 0.178),
+    "turtlebot3_waffle": (0.281, 0.306),
+    "turtlebot3_waffle_pi": (0.281, 0.306),
+    "turtlebot2": (0.354, 0.354),
+    "husky_a200": (0.990, 0.670),
+}
+VIEW_MARGIN_M = 0.5
+MIN_ASPECT = 0.6
+TURTLE_M = 0.45  # the turtle image's size in the window
+MAX_HITS = 20  # wall hits marked on the timeline
+# Quantities that say when something was decided, and what they count from: the start or the Ctrl+C.
+MOMENTS = (("decided_at_s", "start"), ("first_hit_s", "start"), ("stopped_at_s", "start"),
+           ("exit_delay", "ctrl_c"), ("zero_command_delay", "ctrl_c"), ("rest_time", "ctrl_c"),
+           ("judged_until_s", "start"))
+
+
+@dataclass(frozen=True)
+class Replay:
+    """One scenario run of one task, ready for the page: ``data`` is its JSON."""
+
+    task: str
+    scenario: str
+    data: str
+    moments: tuple[tuple[str, float], ...] = ()  # (criterion id, seconds after the start) decided in this run
+
+    @property
+    def anchor(self) -> str:
+        """The element id of its replay on the page (what a criterion's link points to)."""
+        return "replay-" + "".join(c if c.isalnum() or c in "-_" else "-" for c in f"{self.task}-{self.scenario}")
+
+
+def _decode(value: Any) -> Any:
+    if isinstance(value, str):
+        try:
+            return json.loads(value)
+        except json.JSONDecodeError:
+            return value
+    return value
+
+
+def _record(recording: Any, name: str) -> dict[str, Any]:
+    record = _decode((recording.metadata or {}).get(name) or {})
+    return {k: _decode(v) for k, v in record.items()} if isinstance(record, dict) else {}
+
+
+def _r(value: float, digits: int = 3) -> float:
+    """A number as the page needs it (rounded, so that the JSON is short and the same on every machine)."""
+    rounded = round(float(value), digits)
+    return 0.0 if rounded == 0 else rounded
+
+
+def _hex(rgb: tuple[int, int, int]) -> str:
+    return "#%02x%02x%02x" % tuple(int(c) for c in rgb)
+
+
+def _deltas(values: Any, scale: float) -> list[int]:
+    """Values as integers in 1/scale units, each but the first as the change from the one before: a short JSON
+    array (the page adds them up again)."""
+    ints = [int(v) for v in np.round(np.asarray(values, dtype=float) * scale)]
+    return ints[:1] + [b - a for a, b in zip(ints, ints[1:])]
+
+
+def _thin_poses(path: Trajectory, start: float, tolerance: float) -> dict[str, list[int]]:
+    """Poses kept where the robot moved ``tolerance`` metres, turned, or every MAX_GAP_S, first and last always;
+    times in 1/100 s after the start, positions in mm, headings in 1/100 rad."""
+    t, x, y, yaw = (np.asarray(a, dtype=float) for a in (path.t, path.x, path.y, path.yaw))
+    keep = [0] if len(t) else []
+    for i in range(1, len(t)):
+        j = keep[-1]
+        if (math.hypot(x[i] - x[j], y[i] - y[j]) >= tolerance or t[i] - t[j] >= MAX_GAP_S
+                or abs(math.remainder(yaw[i] - yaw[j], math.tau)) >= TURN_RAD or i == len(t) - 1):
+            keep.append(i)
+    return {"t": _deltas(t[keep] - start, 100), "x": _deltas(x[keep], 1000), "y": _deltas(y[keep], 1000),
+            "a": _deltas(np.unwrap(yaw[keep]), 100)}
+
+
+class _PenCanvas(Canvas):
+    """A canvas that keeps the pen's lines as polylines with the time each point was drawn, instead of pixels."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.now = 0.0
+        self.strokes: list[dict[str, Any]] = []
+        self.clears: list[tuple[float, str]] = [(-math.inf, _hex(DEFAULT_BACKGROUND))]
+
+    def line(self, a: tuple[float, float], b: tuple[float, float], rgb: tuple[int, int, int], width: int) -> None:
+        colour = _hex(rgb)
+        last = self.strokes[-1] if self.strokes else None
+        if last is None or last["c"] != colour or last["w"] != width or last["end"] != a:
+            last = {"c": colour, "w": width, "p": [(self.now, *a)]}
+            self.strokes.append(last)
+        last["p"].append((self.now, *b))
+        last["end"] = b
+
+    def clear(self, rgb: tuple[int, int, int] = DEFAULT_BACKGROUND) -> None:
+        if hasattr(self, "clears"):  # Canvas() clears once while it is made: that is the initial background
+            self.clears.append((self.now, _hex(rgb)))
+
+
+def _pen_lines(run: RunData, start: float, tolerance_px: float) -> dict[str, Any]:
+    """The pen's strokes (colour, width in px, points as [t, x px, y px] with y down) and the clears, replayed
+    as the turtlesim picture replays them."""
+    canvas = _PenCanvas()
+    params = _Params()
+    live: dict[str, Turtle] = {}
+    first = run.trajectory("ground_truth")
+    if len(first):
+        live[DEFAULT_TURTLE] = Turtle.spawned(DEFAULT_TURTLE, float(first.x[0]), float(first.y[0]), float(first.yaw[0]))
+    paths = {**run.poses, TURTLE_POSE_TOPIC: first} if len(first) else dict(run.poses)
+    seen = dict.fromkeys(paths, 0)  # each topic's poses come in time order: the k-th is at its t[k]
+    for event in _events(paths, run.service_calls, run.param_changes):
+        if isinstance(event, tuple):
+            topic = event[0]
+            canvas.now = float(paths[topic].t[seen[topic]])
+            seen[topic] += 1
+            _move(event, live, canvas)
+            continue
+        canvas.now = event.t
+        if not isinstance(event, ParamChange):
+            _serve(event, live, canvas, params)
+            continue
+        params.change(event)
+        if event is run.param_changes[0]:  # the tree the world started with: its canvas was filled from it
+            canvas.clears[0] = (-math.inf, _hex(background(params)))
+    return _strokes(canvas, start, tolerance_px)
+
+
+def _strokes(canvas: _PenCanvas, start: float, tolerance_px: float) -> dict[str, Any]:
+    """Each stroke's points kept where the pen moved ``tolerance_px``; times in 1/100 s, positions in 1/10 px."""
+    strokes = []
+    for stroke in canvas.strokes:
+        points = stroke["p"]
+        kept = [points[0]]
+        for point in points[1:-1]:
+            if math.hypot(point[1] - kept[-1][1], point[2] - kept[-1][2]) >= tolerance_px:
+                kept.append(point)
+        kept += points[-1:] if len(points) > 1 else []
+        t, x, y = zip(*kept)
+        strokes.append({"c": stroke["c"], "w": stroke["w"], "t": _deltas(np.subtract(t, start), 100),
+                        "x": _deltas(x, 10), "y": _deltas(y, 10)})
+    clears = [[None if math.isinf(t) else _r(t - start, 2), colour] for t, colour in canvas.clears]
+    return {"strokes": strokes, "clears": clears}
+
+def _goal(task: TaskReport, scenario: str) -> list[float] | None:
+    """Where the rubric puts this scenario's goal (a metric with goal_x and goal_y), read from the task's rubric."""
+    from grader.rubric import RubricError, load_rubric
+
+    try:
+        rubric = load_rubric(task.rubric.file) if task.rubric else None
+    except (RubricError, OSError):
+        return None
+    for s in (s for s in (rubric.scenarios if rubric else ()) if s.name == scenario):
+        for criterion in rubric.criteria:
+            params = criterion.params_for(s)
+            if hasattr(params, "goal_x") and hasattr(params, "goal_y"):
+                return [_r(params.goal_x), _r(params.goal_y)]
+    return None
+
+
+def _moment(measured: dict[str, Any], start: float, ctrl_c: float | None) -> float | None:
+    """When the criterion was decided, in seconds after the start, from the first quantity that says so."""
+    for name, origin in MOMENTS:
+        value = measured.get(name)
+        if isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value):
+            if origin == "start":
+                return float(value)
+            if ctrl_c is not None:
+                return ctrl_c - start + float(value)
+    return None
+
+
+def _events_of(task: TaskReport, scenario: str, run: RunData, start: float) -> list[list[Any]]:
+    """[t, kind, text, criterion id] for Ctrl+C, the node's exit, wall hits and the criteria decided in this run."""
+    events: list[list[Any]] = []
+    ctrl_c = run.shutdown_time()
+    if ctrl_c is not None:
+        events.append([_r(ctrl_c - start, 2), "ctrl_c", "Ctrl+C: the grader asked your node to shut down", ""])
+    hits = [line for line in run.lines if line.stream == "rosout" and WALL_WARNING in line.text]
+    for line in hits[:MAX_HITS]:
+        events.append([_r(line.t - start, 2), "hit", "the turtle hit the wall", ""])
+    info = run.run
+    if info.ended_s is not None:
+        events.append([_r(info.ended_s - start, 2), "exit", _ending(info), ""])
+    for c in task.criteria:
+        if c.scenario != scenario:
+            continue
+        at = _moment(c.measured, start, ctrl_c)
+        if at is not None:
+            measured = criterion_measured(task, c)
+            text = f"{'✔' if c.passed else '✘'} {c.title or c.id}" + (f": {measured}" if measured else "")
+            events.append([_r(at, 2), "pass" if c.passed else "fail", text, c.id])
+    return sorted(events, key=lambda e: (e[0], e[1], e[2]))
+
+
+def _ending(info: RunInfo) -> str:
+    """How the node's process ended, in a student's words."""
+    if info.status == "stopped_at_end":
+        return "the scenario ended, so the grader stopped your node"
+    if info.exit_code is not None:
+        return f"your node exited with code {info.exit_code}"
+    if info.exit_signal not in (None, ""):
+        return f"your node was ended by signal {info.exit_signal}"
+    return f"your node ended ({info.status or 'unknown'})"
+
+
+def _commands(run: RunData, start: float) -> list[list[float]]:
+    """[t, linear.x, angular.z] when the command in force changed, at most once per COMMAND_BIN_S (the last one
+    of each bin: a controller that changes its command every cycle reads the same on a page)."""
+    rows: list[list[float]] = []
+    commands = run.commands
+    for t, linear, angular in zip(commands.t.tolist(), commands.linear[:, 0].tolist(), commands.angular[:, 2].tolist()):
+        row = [_r(t - start, 2), _r(linear, 2), _r(angular, 2)]
+        if rows and math.floor(rows[-1][0] / COMMAND_BIN_S) == math.floor(row[0] / COMMAND_BIN_S) and (
+                len(rows) < 2 or rows[-2][1:] != row[1:]):
+            rows[-1] = row
+        elif not rows or rows[-1][1:] != row[1:]:
+            rows.append(row)
+    return rows
+
+def _lines(run: RunData, start: float) -> tuple[list[list[Any]], int]:
+    """[t, level, stream, text] of the first MAX_LINES output lines, and how many lines came after them."""
+    kept, seen = [], set()
+    for line in run.lines[:MAX_LINES]:
+        level, text = line.message()
+        if (line.t, text) in seen:  # rospy logs a line on /rosout and prints it on stdout: show it once
+            continue
+        seen.add((line.t, text))
+        text = plain(text)
+        text = text if len(text) <= MAX_TEXT else text[:MAX_TEXT - 1] + "…"
+        kept.append([_r(line.t - start, 2), level or "", line.stream, text])
+    return kept, max(0, len(run.lines) - MAX_LINES)
+
+
+def scenario_times(recording: Any) -> tuple[float, float | None]:
+    """The node's start (sim s) and the planned Ctrl+C (s after it), as the recorded scenario says."""
+    world = _record(recording, "rosgrade").get("scenario")
+    world = world if isinstance(world, dict) else {}
+    shutdown = world.get("shutdown_at")
+    return float(world.get("start_time", 0.0)), None if shutdown is None else float(shutdown)
+
+
+def replay_of(task: TaskReport, scenario: str, recording: Any, run: RunData | None = None) -> Replay:
+    """The replay of one recording of ``task`` (``run``: the recording as RunData, when it was read already)."""
+    from grader.reports.plots import _ideal_outline, shape_for
+
+    start, shutdown_at = scenario_times(recording)
+    run = run if run is not None else RunData.from_recording(recording, start, shutdown_at)
+    info = _record(recording, "rosgrade")
+    robot = str(info.get("robot", ""))
+    turtlesim = robot == TURTLESIM
+    path = run.trajectory("ground_truth")
+    data: dict[str, Any] = {"task": task.id, "scenario": scenario, "robot": robot}
+    if turtlesim:
+        tolerance = CANVAS_M / VIEW_PX
+        bodies = {DEFAULT_TURTLE: path} if len(path) else {}
+        bodies.update({topic.removesuffix("/pose").lstrip("/"): p for topic, p in run.poses.items()
+                       if topic != TURTLE_POSE_TOPIC})
+        data["world"] = {"bounds": [0.0, 0.0, _r(CANVAS_M, 4), _r(CANVAS_M, 4)], "size": [TURTLE_M, TURTLE_M],
+                         "px_per_m": METER_PX}
+        data["pen"] = _pen_lines(run, start, tolerance_px=1.0)
+    else:
+        obstacles = _record(recording, "rosgrade").get("scenario", {}).get("obstacles") or []
+        xs = [*np.asarray(path.x).tolist(), *(o["x"] for o in obstacles)] or [0.0]
+        ys = [*np.asarray(path.y).tolist(), *(o["y"] for o in obstacles)] or [0.0]
+        outline = _ideal_outline(shape_for(task.id), path) if len(path) else None
+        if outline is not None:
+            xs += outline[0].tolist()
+            ys += outline[1].tolist()
+            data["ideal"] = {"label": outline[2], "x": [_r(v) for v in outline[0][::4]],
+                             "y": [_r(v) for v in outline[1][::4]]}
+        bounds = _view(min(xs), min(ys), max(xs), max(ys))
+        tolerance = max(bounds[2] - bounds[0], bounds[3] - bounds[1]) / VIEW_PX
+        bodies = {"robot": path} if len(path) else {}
+        data["world"] = {"bounds": [_r(b, 2) for b in bounds], "size": list(FOOTPRINTS.get(robot, (0.3, 0.3))),
+                         "obstacles": [_obstacle(o) for o in obstacles]}
+    goal = _goal(task, scenario)
+    if goal is not None:
+        data["goal"] = goal
+    data["bodies"] = {name: _thin_poses(p, start, tolerance) for name, p in bodies.items()}
+    data["commands"] = _commands(run, start)
+    data["lines"], data["more_lines"] = _lines(run, start)
+    data["events"] = _events_of(task, scenario, run, start)
+    ends = [b["t"][-1] for b in data["bodies"].values() if b["t"]] + [e[0] for e in data["events"]]
+    data["span"] = [min([0.0, *(b["t"][0] for b in data["bodies"].values() if b["t"])]), max([0.0, *ends])]
+    moments = tuple((e[3], e[0]) for e in data["events"] if e[3])
+    return Replay(task.id, scenario, json.dumps(data, separators=(",", ":"), ensure_ascii=False, sort_keys=True),
+                  moments)
+
+
+def _view(x0: float, y0: float, x1: float, y1: float) -> list[float]:
+    """The area shown: what was there with a margin, at least MIN_ASPECT as tall as wide and the other way round
+    (a straight drive would otherwise be a thin strip)."""
+    x0, y0, x1, y1 = x0 - VIEW_MARGIN_M, y0 - VIEW_MARGIN_M, x1 + VIEW_MARGIN_M, y1 + VIEW_MARGIN_M
+    grow_x = max(0.0, MIN_ASPECT * (y1 - y0) - (x1 - x0)) / 2
+    grow_y = max(0.0, MIN_ASPECT * (x1 - x0) - (y1 - y0)) / 2
+    return [x0 - grow_x, y0 - grow_y, x1 + grow_x, y1 + grow_y]
+
+
+def _obstacle(o: dict[str, Any]) -> dict[str, Any]:
+    """A wall or pillar as the page draws it (metres, radians)."""
+    if o.get("kind") == "cylinder":
+        return {"kind": "cylinder", "x": _r(o["x"]), "y": _r(o["y"]), "r": _r(o["radius"])}
+    return {"kind": "box", "x": _r(o["x"]), "y": _r(o["y"]), "a": _r(o.get("yaw", 0.0)),
+            "l": _r(o["length"]), "w": _r(o["width"])}
