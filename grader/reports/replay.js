@@ -246,15 +246,18 @@
     g.lineCap = "round";
     g.lineJoin = "round";
     this.strokes.forEach(function (s) {
-      var first = -1, last = lastAtOrBefore(s.t, t);
-      for (var i = 0; i <= last; i++) { if (s.t[i] >= since) { first = i; break; } }
-      if (first < 0 || last - first < 1) { return; }
+      var last = lastAtOrBefore(s.t, t);  // strokes end at a clear (replay.py): one drawn before it is gone
+      if (last < 0 || s.t[0] < since || (last === 0 && s.t.length === 1)) { return; }
       g.strokeStyle = s.c;
       g.lineWidth = Math.max(s.w / perM, px);
       g.setLineDash([]);
       g.beginPath();
-      g.moveTo(s.x[first] / perM, top - s.y[first] / perM);
-      for (var j = first + 1; j <= last; j++) { g.lineTo(s.x[j] / perM, top - s.y[j] / perM); }
+      g.moveTo(s.x[0] / perM, top - s.y[0] / perM);
+      for (var j = 1; j <= last; j++) { g.lineTo(s.x[j] / perM, top - s.y[j] / perM); }
+      if (last + 1 < s.t.length && s.t[last + 1] > s.t[last]) {  // on the way to the next point: draw up to the pen
+        var f = (t - s.t[last]) / (s.t[last + 1] - s.t[last]);
+        g.lineTo((s.x[last] + f * (s.x[last + 1] - s.x[last])) / perM, top - (s.y[last] + f * (s.y[last + 1] - s.y[last])) / perM);
+      }
       g.stroke();
     });
   };

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -23,7 +24,10 @@ from sim.scenario import TURTLESIM
 from sim.turtle_canvas import METER_PX, Canvas
 from sim.turtlesim import CANVAS_M, DEFAULT_BACKGROUND, DEFAULT_TURTLE, Turtle, background
 
-VIEW_PX = 480  # the replay's width on a wide screen: decimation keeps what differs by a pixel there
+MAX_BYTES = 250_000  # one run's data at most (the issue's limit is 300 KB with the page around it)
+COARSER = (1, 2, 4, 8, 16, 32, 64)  # how much coarser than a pixel the data may get to fit in MAX_BYTES
+VIEW_PX = 480
+STRAIGHT_SPAN = 100  # pen points looked back at when leaving out straight stretches  # the replay's width on a wide screen: decimation keeps what differs by a pixel there
 MAX_LINES = 300  # output lines kept per run (the first ones: a loop printing forever repeats itself)
 MAX_TEXT = 160  # characters kept of one line
 COMMAND_BIN_S = 0.1  # commands shown at most this often
@@ -93,16 +97,17 @@ def _deltas(values: Any, scale: float) -> list[int]:
     return ints[:1] + [b - a for a, b in zip(ints, ints[1:])]
 
 
-def _thin_poses(path: Trajectory, start: float, tolerance: float) -> dict[str, list[int]]:
-    """Poses kept where the robot moved ``tolerance`` metres, turned, or every MAX_GAP_S, first and last always;
-    times in 1/100 s after the start, positions in mm, headings in 1/100 rad."""
+def _thin_poses(path: Trajectory, start: float, tolerance: float, coarse: float = 1) -> dict[str, list[int]]:
+    """Poses kept where the path bends by ``tolerance`` metres, the heading turned TURN_RAD, or every MAX_GAP_S
+    (those two times ``coarse``), first and last always; times in 1/100 s after the start, positions in mm,
+    headings in 1/100 rad."""
     t, x, y, yaw = (np.asarray(a, dtype=float) for a in (path.t, path.x, path.y, path.yaw))
-    keep = [0] if len(t) else []
-    for i in range(1, len(t)):
-        j = keep[-1]
-        if (math.hypot(x[i] - x[j], y[i] - y[j]) >= tolerance or t[i] - t[j] >= MAX_GAP_S
-                or abs(math.remainder(yaw[i] - yaw[j], math.tau)) >= TURN_RAD or i == len(t) - 1):
-            keep.append(i)
+
+    def due(i: int, since: int) -> bool:
+        return (t[i] - t[since] >= MAX_GAP_S * coarse
+                or abs(math.remainder(yaw[i] - yaw[since], math.tau)) >= TURN_RAD * coarse)
+
+    keep = _straightened(x, y, tolerance, due) if len(t) else []
     return {"t": _deltas(t[keep] - start, 100), "x": _deltas(x[keep], 1000), "y": _deltas(y[keep], 1000),
             "a": _deltas(np.unwrap(yaw[keep]), 100)}
 
@@ -128,11 +133,29 @@ class _PenCanvas(Canvas):
     def clear(self, rgb: tuple[int, int, int] = DEFAULT_BACKGROUND) -> None:
         if hasattr(self, "clears"):  # Canvas() clears once while it is made: that is the initial background
             self.clears.append((self.now, _hex(rgb)))
+            if self.strokes:  # a stroke never spans a clear: the page shows whole strokes drawn since the last one
+                self.strokes[-1]["end"] = None
 
 
-def _pen_lines(run: RunData, start: float, tolerance_px: float) -> dict[str, Any]:
-    """The pen's strokes (colour, width in px, points as [t, x px, y px] with y down) and the clears, replayed
-    as the turtlesim picture replays them."""
+def _straightened(x: np.ndarray, y: np.ndarray, tolerance: float,
+                  due: Callable[[int, int], bool] = lambda i, since: False) -> list[int]:
+    """The indices of the points a polyline needs: one is left out while every point since the last one kept lies
+    within ``tolerance`` of the straight line from there to the next (looking back at most STRAIGHT_SPAN points),
+    unless ``due(index, index of the last one kept)``."""
+    kept = [0]
+    for i in range(1, len(x) - 1):
+        since = kept[-1]
+        dx, dy = x[i + 1] - x[since], y[i + 1] - y[since]
+        rx, ry = x[since + 1:i + 1] - x[since], y[since + 1:i + 1] - y[since]
+        length = math.hypot(dx, dy)
+        off = np.abs(dx * ry - dy * rx) / length if length > 0 else np.hypot(rx, ry)
+        if i - since >= STRAIGHT_SPAN or off.max() > tolerance or due(i, since):
+            kept.append(i)
+    return kept + [len(x) - 1] if len(x) > 1 else kept
+
+
+def _pen_canvas(run: RunData) -> _PenCanvas:
+    """The pen's strokes and the clears, replayed as the turtlesim picture replays them."""
     canvas = _PenCanvas()
     params = _Params()
     live: dict[str, Turtle] = {}
@@ -155,20 +178,17 @@ def _pen_lines(run: RunData, start: float, tolerance_px: float) -> dict[str, Any
         params.change(event)
         if event is run.param_changes[0]:  # the tree the world started with: its canvas was filled from it
             canvas.clears[0] = (-math.inf, _hex(background(params)))
-    return _strokes(canvas, start, tolerance_px)
+    return canvas
 
 
 def _strokes(canvas: _PenCanvas, start: float, tolerance_px: float) -> dict[str, Any]:
-    """Each stroke's points kept where the pen moved ``tolerance_px``; times in 1/100 s, positions in 1/10 px."""
+    """Each stroke's points, those on a straight stretch left out (the page draws the line to where the pen is
+    at any time between two points); times in 1/100 s, positions in 1/10 px."""
     strokes = []
     for stroke in canvas.strokes:
-        points = stroke["p"]
-        kept = [points[0]]
-        for point in points[1:-1]:
-            if math.hypot(point[1] - kept[-1][1], point[2] - kept[-1][2]) >= tolerance_px:
-                kept.append(point)
-        kept += points[-1:] if len(points) > 1 else []
-        t, x, y = zip(*kept)
+        t, x, y = np.array(stroke["p"], dtype=float).T
+        keep = _straightened(x, y, tolerance_px)
+        t, x, y = t[keep], x[keep], y[keep]
         strokes.append({"c": stroke["c"], "w": stroke["w"], "t": _deltas(np.subtract(t, start), 100),
                         "x": _deltas(x, 10), "y": _deltas(y, 10)})
     clears = [[None if math.isinf(t) else _r(t - start, 2), colour] for t, colour in canvas.clears]
@@ -236,18 +256,22 @@ def _ending(info: RunInfo) -> str:
     return f"your node ended ({info.status or 'unknown'})"
 
 
-def _commands(run: RunData, start: float) -> list[list[float]]:
-    """[t, linear.x, angular.z] when the command in force changed, at most once per COMMAND_BIN_S (the last one
-    of each bin: a controller that changes its command every cycle reads the same on a page)."""
+def _commands(run: RunData, start: float, every_s: float) -> list[list[float]]:
+    """[t, linear.x, angular.z] when the command in force changed, at most once per ``every_s`` (the last one of
+    each bin: a controller that changes its command every cycle reads the same on a page)."""
     rows: list[list[float]] = []
     commands = run.commands
     for t, linear, angular in zip(commands.t.tolist(), commands.linear[:, 0].tolist(), commands.angular[:, 2].tolist()):
         row = [_r(t - start, 2), _r(linear, 2), _r(angular, 2)]
-        if rows and math.floor(rows[-1][0] / COMMAND_BIN_S) == math.floor(row[0] / COMMAND_BIN_S) and (
-                len(rows) < 2 or rows[-2][1:] != row[1:]):
-            rows[-1] = row
-        elif not rows or rows[-1][1:] != row[1:]:
-            rows.append(row)
+        if rows and rows[-1][1:] == row[1:]:
+            continue
+        if rows and math.floor(rows[-1][0] / every_s) == math.floor(row[0] / every_s):
+            if len(rows) > 1 and rows[-2][1:] == row[1:]:
+                rows.pop()  # back to the command before, within one bin: as if it had not changed
+            else:
+                rows[-1] = row
+            continue
+        rows.append(row)
     return rows
 
 def _lines(run: RunData, start: float) -> tuple[list[list[Any]], int]:
@@ -278,21 +302,21 @@ def replay_of(task: TaskReport, scenario: str, recording: Any, run: RunData | No
 
     start, shutdown_at = scenario_times(recording)
     run = run if run is not None else RunData.from_recording(recording, start, shutdown_at)
-    info = _record(recording, "rosgrade")
-    robot = str(info.get("robot", ""))
-    turtlesim = robot == TURTLESIM
+    robot = str(_record(recording, "rosgrade").get("robot", ""))
     path = run.trajectory("ground_truth")
     data: dict[str, Any] = {"task": task.id, "scenario": scenario, "robot": robot}
-    if turtlesim:
+    canvas = None
+    if robot == TURTLESIM:
         tolerance = CANVAS_M / VIEW_PX
         bodies = {DEFAULT_TURTLE: path} if len(path) else {}
         bodies.update({topic.removesuffix("/pose").lstrip("/"): p for topic, p in run.poses.items()
                        if topic != TURTLE_POSE_TOPIC})
         data["world"] = {"bounds": [0.0, 0.0, _r(CANVAS_M, 4), _r(CANVAS_M, 4)], "size": [TURTLE_M, TURTLE_M],
                          "px_per_m": METER_PX}
-        data["pen"] = _pen_lines(run, start, tolerance_px=1.0)
+        canvas = _pen_canvas(run)
     else:
-        obstacles = _record(recording, "rosgrade").get("scenario", {}).get("obstacles") or []
+        world = _record(recording, "rosgrade").get("scenario")
+        obstacles = (world.get("obstacles") if isinstance(world, dict) else None) or []
         xs = [*np.asarray(path.x).tolist(), *(o["x"] for o in obstacles)] or [0.0]
         ys = [*np.asarray(path.y).tolist(), *(o["y"] for o in obstacles)] or [0.0]
         outline = _ideal_outline(shape_for(task.id), path) if len(path) else None
@@ -309,15 +333,20 @@ def replay_of(task: TaskReport, scenario: str, recording: Any, run: RunData | No
     goal = _goal(task, scenario)
     if goal is not None:
         data["goal"] = goal
-    data["bodies"] = {name: _thin_poses(p, start, tolerance) for name, p in bodies.items()}
-    data["commands"] = _commands(run, start)
     data["lines"], data["more_lines"] = _lines(run, start)
     data["events"] = _events_of(task, scenario, run, start)
-    ends = [b["t"][-1] for b in data["bodies"].values() if b["t"]] + [e[0] for e in data["events"]]
-    data["span"] = [min([0.0, *(b["t"][0] for b in data["bodies"].values() if b["t"])]), max([0.0, *ends])]
+    times = [float(p.t[i]) - start for p in bodies.values() for i in (0, -1)] + [e[0] for e in data["events"]]
+    data["span"] = [_r(min([0.0, *times]), 2), _r(max([0.0, *times]), 2)]
+    for coarse in COARSER:  # finer than a pixel where it fits, coarser where a long run would not
+        data["bodies"] = {name: _thin_poses(p, start, tolerance * coarse, coarse) for name, p in bodies.items()}
+        if canvas is not None:
+            data["pen"] = _strokes(canvas, start, tolerance_px=coarse)
+        data["commands"] = _commands(run, start, COMMAND_BIN_S * coarse)
+        text = json.dumps(data, separators=(",", ":"), ensure_ascii=False, sort_keys=True)
+        if len(text.encode()) <= MAX_BYTES:
+            break
     moments = tuple((e[3], e[0]) for e in data["events"] if e[3])
-    return Replay(task.id, scenario, json.dumps(data, separators=(",", ":"), ensure_ascii=False, sort_keys=True),
-                  moments)
+    return Replay(task.id, scenario, text, moments)
 
 
 def _view(x0: float, y0: float, x1: float, y1: float) -> list[float]:
