@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, Field, JsonValue, field_validator, model_validator
 
 from sim.clock import seconds_to_ns
 from sim.profile import ProfileError, load_robot
@@ -103,6 +103,23 @@ class ScriptedCommand(_Model):
         return seconds_to_ns(self.t)
 
 
+class ServiceCallSpec(_Model):
+    """A service call the grader makes at ``t`` seconds after the start, as ``ros2 service call <service> <type>
+    <request>`` (or ``rosservice call``) would: it waits for the service to be offered, then for the answer, before
+    its next call. ``type`` is spelled as the run's client library spells it (``example_interfaces/srv/AddTwoInts``
+    for rclpy, ``rospy_tutorials/AddTwoInts`` for rospy); ``request`` gives every field of the request."""
+
+    t: NonNegative
+    service: Annotated[str, Field(pattern=r"^/[A-Za-z0-9_/]+$")]
+    type: str
+    request: dict[str, JsonValue] = Field(default_factory=dict)
+
+    @property
+    def t_ns(self) -> int:
+        """``t`` in integer nanoseconds (relative to the start)."""
+        return seconds_to_ns(self.t)
+
+
 class Scenario(_Model):
     """One run: the world starts at ``start_time`` (it has been running since 0) and lasts ``duration`` seconds after it."""
 
@@ -118,6 +135,8 @@ class Scenario(_Model):
     imperfections: Imperfections = Imperfections()
     script: list[ScriptedCommand] = Field(default_factory=list, description="commands sent by the scripted driver")
     obstacles: list[Obstacle] = Field(default_factory=list, description="fixed walls and pillars (empty: an open floor)")
+    service_calls: list[ServiceCallSpec] = Field(default_factory=list,
+                                                 description="service calls the grader makes, in time order")
     command_types: list[str] | None = Field(
         None, description="velocity command types the robot's base takes, e.g. ['geometry_msgs/Twist', "
         "'geometry_msgs/TwistStamped']; None: what the run's client library's robot takes (ROS 1: Twist; "
@@ -141,6 +160,9 @@ class Scenario(_Model):
         for i, (earlier, later) in enumerate(zip(times, times[1:]), start=1):
             if later < earlier:
                 raise ValueError(f"script[{i}].t = {later} s comes before script[{i - 1}].t = {earlier} s; expected times in order")
+        calls = [call.t for call in self.service_calls]
+        if calls != sorted(calls) or (calls and calls[-1] > self.duration):
+            raise ValueError("service_calls must come in time order, within the run's duration")
         if times and times[-1] > self.duration:
             raise ValueError(f"script[{len(times) - 1}].t = {times[-1]} s is after the end of the run (duration {self.duration} s)")
         return self

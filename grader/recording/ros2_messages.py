@@ -12,6 +12,7 @@ from functools import lru_cache
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 from rosbags.typesys.store import Typestore
 
+from grader.nodelib.ros2.rosgrade_rosidl._defs import SERVICES as NODE_SERVICE_HASHES
 from grader.recording.errors import RecordingError
 
 _TYPE_NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)/(?:(msg|srv)/)?([A-Za-z][A-Za-z0-9_]*)$")
@@ -26,6 +27,7 @@ SERVICES = {
     "std_srvs/srv/Empty": ("", ""),
     "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
     "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),
+    "example_interfaces/srv/AddTwoInts": ("int64 a\nint64 b", "int64 sum"),
     "turtlesim/srv/Kill": ("string name", ""),
     "turtlesim/srv/SetPen": ("uint8 r\nuint8 g\nuint8 b\nuint8 width\nuint8 off", ""),
     "turtlesim/srv/Spawn": ("float32 x\nfloat32 y\nfloat32 theta\nstring name", "string name"),
@@ -143,11 +145,13 @@ class Ros2Catalog:
         return match is not None and f"{match.group(1)}/srv/{match.group(3)}" in SERVICES
 
     def service_md5sum(self, service_name: str) -> str:
-        """The RIHS01 hash of a known service's request type (what a ROS 2 client and server must agree on)."""
+        """The RIHS01 hash of a known service (what a ROS 2 client and server must agree on): the node library's,
+        rosidl's hash of the service's request, response and event, for the services it has; else its request's."""
         match = _TYPE_NAME.match(service_name)
-        if match is None or f"{match.group(1)}/srv/{match.group(3)}" not in SERVICES:
+        name = "" if match is None else f"{match.group(1)}/srv/{match.group(3)}"
+        if name not in SERVICES:
             raise RecordingError(f"unknown service type {service_name!r}")
-        return self._store.hash_rihs01(f"{match.group(1)}/srv/{match.group(3)}_Request")
+        return NODE_SERVICE_HASHES.get(name) or self._store.hash_rihs01(f"{name}_Request")
 
 
 def _reason(exc: BaseException) -> str:

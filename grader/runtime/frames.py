@@ -89,13 +89,35 @@ class Wait(_Frame):
 
 
 class Call(_Frame):
-    """The JSON header of a CALL (the request's bytes follow it). ``probe``: only ask whether the service is served,
-    with no request (``wait_for_service``, as rospy's probe connection)."""
+    """The JSON header of a CALL (the request's bytes follow it): the answer comes in a later BATCH on the client's
+    handle ``id``, for its call number ``seq``. ``probe``: only ask whether the service is served, with no request
+    (``wait_for_service``, as rospy's probe connection), answered at once by a REPLY."""
 
     service: Name
     type: Name  # "*" with md5sum "*" in a probe, which names no srv type
     md5sum: TypeHash
     probe: bool
+    id: Handle
+    seq: Handle
+
+
+class Serve(_Frame):
+    """SERVE: the node offers ``service`` of srv ``type`` under its handle ``id``; UNREGISTER withdraws it."""
+
+    id: Handle
+    service: Name
+    type: Name
+    md5sum: TypeHash
+
+
+class Respond(_Frame):
+    """The JSON header of a RESPOND (the response's bytes follow it when ``ok``): the node's answer to request
+    ``seq`` delivered on its server handle ``id``; ``failed`` with the server's text (rospy's handler raised)."""
+
+    id: Handle
+    seq: Handle
+    status: Literal["ok", "failed"]
+    error: Annotated[str, Field(max_length=ch.MAX_MESSAGE_CHARS)]
 
 
 class Param(_Frame):
@@ -115,7 +137,8 @@ class Param(_Frame):
 
 SCHEMAS: dict[int, type[_Frame]] = {
     ch.HELLO: Hello, ch.INIT: Init, ch.ADVERTISE: Register, ch.SUBSCRIBE: Register, ch.UNREGISTER: Unregister,
-    ch.LOG: Log, ch.EXCEPTION: ExceptionReport, ch.WAIT: Wait, ch.CALL: Call, ch.PARAM: Param,
+    ch.LOG: Log, ch.EXCEPTION: ExceptionReport, ch.WAIT: Wait, ch.CALL: Call, ch.PARAM: Param, ch.SERVE: Serve,
+    ch.RESPOND: Respond,
 }
 
 

@@ -71,14 +71,35 @@ class Publication:
 
 @dataclass(frozen=True)
 class ServiceCall:
-    """A node's service call (``probe``: only asking whether the service is served); its request bytes were
-    checked against the srv type when the grader knows that type. The session answers it with a ServiceReply."""
+    """A node's service call (``probe``: only asking whether the service is served, answered at once with a
+    ServiceReply); its request bytes were checked against the srv type when the grader knows that type. The answer
+    to a real call goes to the node's client handle ``ident`` for its call number ``seq`` in a later BATCH."""
 
     service: str
     type: str
     md5sum: str
     probe: bool
     request: bytes
+    ident: int = 0
+    seq: int = 0
+
+
+@dataclass(frozen=True)
+class ServiceOffer:
+    """A node now serves ``endpoint.topic`` (the service's name) with srv type ``endpoint.type`` (SERVE)."""
+
+    endpoint: Endpoint
+
+
+@dataclass(frozen=True)
+class ServiceAnswer:
+    """A node's server answered request ``seq`` (RESPOND); the response bytes were checked as the srv's response."""
+
+    endpoint: Endpoint
+    seq: int
+    status: str
+    error: str
+    response: bytes
 
 
 @dataclass(frozen=True)
@@ -123,6 +144,7 @@ class NodeState:
     disable_signals: bool = False
     publishers: dict[int, Endpoint] = field(default_factory=dict)
     subscribers: dict[int, Endpoint] = field(default_factory=dict)
+    services: dict[int, Endpoint] = field(default_factory=dict)  # what it serves (topic: the service's name)
     exception: dict | None = None  # the uncaught exception that ended the node, if any
     caught: list[dict] = field(default_factory=list)  # exceptions rospy printed and carried on from (callbacks, hooks)
     output_bytes: int = 0
@@ -252,7 +274,7 @@ class NodeLink:
                        on_act: Callable[[], None] | None = None) -> int | None:
         """Read frames until the node yields, passing each event at t_ns to sink; returns wake_ns or None.
 
-        A ServiceCall is answered at once with the ServiceReply the sink returns for it (the node waits for it).
+        A probe ServiceCall is answered at once with the ServiceReply the sink returns for it (the node waits).
         After a BATCH of moments (``inert``: its inert publishers, see rosgrade_channel.encode_batch) the node names
         each moment it sends something at (MOMENT) before that: ``at_moment`` gets its time and returns it, and what
         follows happens then. Its first frame that is not inert goes to ``on_act`` before it is handled, and ends
@@ -288,7 +310,7 @@ class NodeLink:
             for item in event if isinstance(event, list) else (event,):
                 if item is not None:
                     answer = sink(item)
-                    if isinstance(item, ServiceCall):
+                    if isinstance(item, ServiceCall) and item.probe:
                         self._reply(answer)
 
     def _inert(self, kind: int, payload: bytes, inert: dict[int, bool]) -> bool:
@@ -332,12 +354,17 @@ class NodeLink:
         if kind == ch.CALL:
             header, request = ch.split_header_bytes(payload)
             return self._call(self._parse(kind, header), request)
+        if kind == ch.RESPOND:
+            header, response = ch.split_header_bytes(payload)
+            return self._respond(self._parse(kind, header), response)
         frame = self._parse(kind, payload)
         if kind in (ch.ADVERTISE, ch.SUBSCRIBE):
             return self._register(kind, frame, t_ns)
+        if kind == ch.SERVE:
+            return self._serve(frame, t_ns)
         if kind == ch.UNREGISTER:
             # Closed endpoints are kept (marked) so the run's diagnostics still count what they carried.
-            for endpoint in (st.publishers.get(frame.id), st.subscribers.get(frame.id)):
+            for endpoint in (st.publishers.get(frame.id), st.subscribers.get(frame.id), st.services.get(frame.id)):
                 if endpoint is not None:
                     endpoint.closed = True
             return None
@@ -391,7 +418,38 @@ class NodeLink:
                 self._catalog.decode(self._catalog.service_part(frame.type, "Request"), request)
             except RecordingError as exc:
                 raise ProtocolViolation(f"request to {service} is not a valid {frame.type} request: {exc}") from None
-        return ServiceCall(service, frame.type, frame.md5sum, frame.probe, request)
+        return ServiceCall(service, frame.type, frame.md5sum, frame.probe, request, frame.id, frame.seq)
+
+    def _serve(self, frame: frames.Serve, t_ns: int) -> ServiceOffer:
+        """A service the node offers: a srv type the grader knows must carry its own md5sum (or type hash)."""
+        st = self.state
+        if self._catalog.known_service(frame.type) and frame.md5sum != self._catalog.service_md5sum(frame.type):
+            raise ProtocolViolation(f"md5sum for service type {frame.type} does not match its definition")
+        if frame.id in st.publishers or frame.id in st.subscribers or frame.id in st.services:
+            raise ProtocolViolation(f"SERVE with handle {frame.id}, which the node already uses")
+        if len(st.publishers) + len(st.subscribers) + len(st.services) >= MAX_ENDPOINTS:
+            raise EndpointLimitExceeded(f"registered more than {MAX_ENDPOINTS} publishers, subscribers and "
+                                        "services; it was stopped")
+        endpoint = Endpoint(ident=frame.id, topic=_topic(frame.service, "service"), type=frame.type,
+                            md5sum=frame.md5sum, queue_size=None, latch=False, registered_ns=t_ns)
+        st.services[frame.id] = endpoint
+        return ServiceOffer(endpoint)
+
+    def _respond(self, frame: frames.Respond, response: bytes) -> ServiceAnswer:
+        """A server's answer, its response checked as PUBLISH checks a message (when the srv type is known)."""
+        endpoint = self.state.services.get(frame.id)
+        if endpoint is None or endpoint.closed:
+            raise ProtocolViolation(f"RESPOND on unknown or withdrawn service handle {frame.id}")
+        if frame.status != ch.SERVICE_OK and response:
+            raise ProtocolViolation(f"RESPOND {frame.status} on {endpoint.topic} carries {len(response)} bytes")
+        if frame.status == ch.SERVICE_OK and self._catalog.known_service(endpoint.type):
+            try:
+                self._catalog.decode(self._catalog.service_part(endpoint.type, "Response"), response)
+            except RecordingError as exc:
+                raise ProtocolViolation(f"response of {endpoint.topic} is not a valid {endpoint.type} response: "
+                                        f"{exc}") from None
+        endpoint.count += 1
+        return ServiceAnswer(endpoint, frame.seq, frame.status, frame.error, response)
 
     def _param(self, frame: frames.Param, size: int) -> ParamChange:
         """A parameter change: an absolute name (the root only takes a namespace), within the node's byte budget."""
@@ -460,7 +518,7 @@ class NodeLink:
         del self._pending[:written]
 
     def _reply(self, reply: ServiceReply) -> None:
-        """Send the REPLY to the node's CALL."""
+        """Send the REPLY to the node's probe CALL."""
         if not isinstance(reply, ServiceReply) or reply.status not in ch.SERVICE_STATUSES:
             raise TypeError(f"a service call needs a ServiceReply, the session gave {reply!r}")
         self._send(ch.encode_header_bytes(ch.REPLY, {"status": reply.status, "error": reply.error}, reply.response))

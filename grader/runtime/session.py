@@ -27,13 +27,15 @@ from grader.runtime.cpu_claim import one_cpu
 from grader.runtime.diagnostics import diagnose, topic_summary
 from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
                                       NodeOverLimit, NodeSilent, OutputLine, ParamChange, ProtocolViolation,
-                                      Publication, ServiceCall, ServiceReply)
+                                      Publication, ServiceAnswer, ServiceCall, ServiceOffer, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
+from grader.runtime.scenario_calls import ScenarioCaller
+from grader.runtime.services import Caller, ServiceRouter
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from grader.runtime.wire import wire_for
-from sim import WORLD_NODE_NAMES, CommandSample, TurtlesimWorld, World, WorldService, WorldTopic, open_world
+from sim import WORLD_NODE_NAMES, CommandSample, TurtlesimWorld, World, WorldTopic, open_world
 
 # Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
 # published before that are lost. A new subscriber to a running publisher (Gazebo's /odom) gets the next message.
@@ -45,9 +47,6 @@ LOST_PREFIX = "/rosgrade/lost"
 # A node's publications on a topic only the world or the grader publish are recorded under this prefix, never
 # delivered, and never on the world's own topic.
 IGNORED_PREFIX = "/rosgrade/ignored"
-# A node's service calls are recorded under this prefix and the service's name: ``<service>/request`` (what the node
-# sent), then ``<service>/response`` (what the world answered) or ``<service>/error`` (why the call failed).
-SERVICE_PREFIX = "/rosgrade/service"
 DRIVER_CALLERID = "/rosgrade_driver"
 # Names of the grader's own nodes (each world's node and real ROS's /rosout): a student node may not take them.
 RESERVED_NAMES = frozenset({*WORLD_NODE_NAMES, DRIVER_CALLERID, "/rosout"})
@@ -182,6 +181,8 @@ class Session:
         # came after it): repeating it changes nothing but the base's timeout.
         self._robot_command: tuple[str, bytes] | None = None
         self._ahead: _Speculation | None = None  # the world run ahead of the node now running, until settled
+        self.services: ServiceRouter | None = None  # who serves what, and the calls in flight (grader/runtime/services)
+        self.caller: ScenarioCaller | None = None  # the scenario's own service calls
 
     # -- public ------------------------------------------------------------------------------------------------
     def run(self) -> RunResult:
@@ -212,6 +213,10 @@ class Session:
                 open(self.log_path, "w", encoding="utf-8") as log_file:
             self._recorder, self._log_file = rec, log_file
             self._start_parameters()
+            self.services = ServiceRouter(self.wire, self.world, rec.write,
+                                          lambda index, item: self.nodes[index].deliveries.append(item),
+                                          self._world_sample, self._take_declarations)
+            self.caller = ScenarioCaller(self.spec.scenario.service_calls, self.start_ns, self.services)
             try:
                 with timing.stage("node start-up", absorb=True):
                     for node in list(self.nodes):
@@ -338,6 +343,8 @@ class Session:
                 # The world stops the loop only for what some node subscribes to; the rest is recorded on the way.
                 candidates = [c for c in (horizon, self.world.next_output_ns(subscribed)) if c is not None]
                 candidates += self._latched_connect_times(t)
+                if (call_ns := self.caller.next_ns()) is not None:
+                    candidates.append(max(call_ns, t))
                 for node in alive:
                     term = node.term_ns if node.kill_ns is None else None  # SIGTERM already sent: next is SIGKILL
                     candidates += [c for c in (node.wake_ns, term, node.kill_ns) if c is not None]
@@ -356,6 +363,7 @@ class Session:
                 timing.add("world messages (encode, record, queue)", time.perf_counter() - stepped)
             if t_next >= horizon:
                 return
+            self.caller.tick(t_next)
             shutdown = None
             if self.shutdown_ns is not None and not self.shutdown_sent and t_next >= self.shutdown_ns and alive:
                 self.shutdown_sent = True
@@ -579,15 +587,21 @@ class Session:
 
     # -- what nodes do -----------------------------------------------------------------------------------------
     def _node_event(self, node: _Node, event: object, t: int) -> ServiceReply | None:
-        if isinstance(event, ServiceCall):
-            return self._service_call(node, event, t)
-        if isinstance(event, ParamChange):
-            if event.value is None:
-                self.params.delete(event.name, self.nodes.index(node))
-            else:
-                self.params.set(event.name, event.value, self.nodes.index(node))
-        elif isinstance(event, Publication):
+        if isinstance(event, Publication):
             self._publication(node, event.endpoint, event.data, t)
+            return None
+        index = self.nodes.index(node)
+        if isinstance(event, ServiceCall):
+            return self.services.call(Caller(node.callerid, "node", index, event.ident, event.seq), event, t)
+        if isinstance(event, ServiceOffer):
+            self.services.offer(index, event.endpoint, lambda: node.callerid, lambda: node.alive, t)
+        elif isinstance(event, ServiceAnswer):
+            self.services.answer(index, event, t)
+        elif isinstance(event, ParamChange):
+            if event.value is None:
+                self.params.delete(event.name, index)
+            else:
+                self.params.set(event.name, event.value, index)
         elif isinstance(event, OutputLine):
             self._output(node, event, t)
             if node.link.state.output_truncated:
@@ -627,51 +641,6 @@ class Session:
             callerid, origin = self.nodes[author].callerid, "node"
         self._recorder.write(PARAM_TOPIC, self.wire.string_type, self.wire.string(text), self.world.time_ns,
                              callerid=callerid, origin=origin)
-
-    # -- service calls (answered by the world's server at the caller's time) -----------------------------------
-    def _service_call(self, node: _Node, call: ServiceCall, t: int) -> ServiceReply:
-        """Answer a node's service call at t as the server the world declares would; record it (not probes)."""
-        served = next((s for s in self.world.services if s.name == call.service), None)
-        if served is None:
-            reply = ServiceReply(ch.SERVICE_UNAVAILABLE)
-        elif call.probe:  # a probe names no srv type (md5sum "*"), which roscpp lets through
-            return ServiceReply(ch.SERVICE_OK)
-        elif call.type != served.type or call.md5sum != self.catalog.service_md5sum(served.type):
-            # roscpp's words when a client's srv type is not the server's
-            has = self.catalog.service_md5sum(served.type)
-            reply = ServiceReply(ch.SERVICE_REFUSED, f"client wants service {call.service} to have md5sum "
-                                                     f"{call.md5sum}, but it has {has}. Dropping connection.")
-        else:
-            return self._serve(node, served, call.request, t)
-        if not call.probe:
-            self._record_failure(call.service, reply, t)
-        return reply
-
-    def _serve(self, node: _Node, served: WorldService, request: bytes, t: int) -> ServiceReply:
-        """Hand a request to the world now: what it logs, its answer and the topics it adds or removes (a spawned or
-        killed turtle) take effect at once."""
-        self._recorder.write(f"{SERVICE_PREFIX}{served.name}/request", self.wire.service_part(served.type, "Request"),
-                             request, t,
-                             callerid=node.callerid, origin="node")
-        result = self.world.call(served.name, self.wire.request_values(served.type, request))
-        for sample in result.samples:
-            self._world_sample(sample)
-        self._take_declarations()
-        if not result.ok:
-            reply = ServiceReply(ch.SERVICE_FAILED, result.error)
-            self._record_failure(served.name, reply, t)
-            return reply
-        data = self.wire.response_bytes(served.type, result.response)
-        self._recorder.write(f"{SERVICE_PREFIX}{served.name}/response", self.wire.service_part(served.type, "Response"),
-                             data, t,
-                             callerid=self.world.node_name, origin="world")
-        return ServiceReply(ch.SERVICE_OK, response=data)
-
-    def _record_failure(self, service: str, reply: ServiceReply, t: int) -> None:
-        """Why a call failed, as ``status`` or ``status: the server's text`` (std_msgs/String)."""
-        text = f"{reply.status}: {reply.error}" if reply.error else reply.status
-        self._recorder.write(f"{SERVICE_PREFIX}{service}/error", self.wire.string_type, self.wire.string(text), t,
-                             callerid=self.world.node_name, origin="world")
 
     def _take_declarations(self) -> None:
         """What the world publishes now: at the start, and again after a service call (spawn and kill change it)."""

@@ -85,7 +85,11 @@ class Wire:
 
     def response_bytes(self, srv_type: str, values: Mapping[str, object]) -> bytes:
         """The bytes of a ``srv_type`` response built from a world's plain values."""
-        type_name = self.service_part(srv_type, "Response")
+        return self.part_bytes(srv_type, "Response", values)
+
+    def part_bytes(self, srv_type: str, part: str, values: Mapping[str, object]) -> bytes:
+        """The bytes of a ``srv_type`` "Request" or "Response" built from plain values."""
+        type_name = self.service_part(srv_type, part)
         cls = self.catalog.message_class(type_name)
         if self.name == "ros2" and not values and "structure_needs_at_least_one_member" in cls.__dataclass_fields__:
             values = {"structure_needs_at_least_one_member": 0}

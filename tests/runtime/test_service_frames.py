@@ -1,5 +1,6 @@
-"""The service part of the channel contract: CALL and REPLY frames, the Call schema, and the grader's checks of a call
-(a malformed one is a protocol violation, a good one is answered at once with the session's reply)."""
+"""The service part of the channel contract: CALL, SERVE, RESPOND and REPLY frames, their schemas, the BATCH's
+service deliveries, and the grader's checks (a malformed frame is a protocol violation; a probe is answered at once
+with the session's reply, a call goes to the session and is answered later)."""
 from __future__ import annotations
 
 import json
@@ -10,12 +11,14 @@ import pytest
 from grader.nodelib.common import rosgrade_channel as ch
 from grader.recording import default_catalog
 from grader.runtime import frames
-from grader.runtime.node_link import NodeLink, ProtocolViolation, ServiceCall, ServiceReply
+from grader.runtime.node_link import (NodeLink, ProtocolViolation, ServiceAnswer, ServiceCall, ServiceOffer,
+                                      ServiceReply)
 
 CATALOG = default_catalog()
 SPAWN_MD5 = "0b2d2e872a8e2887d5ed626f2bf2c561"  # turtlesim/Spawn's md5sum in ROS 1 noetic
-SPAWN = {"service": "/spawn", "type": "turtlesim/Spawn", "md5sum": SPAWN_MD5, "probe": False}
-PROBE = {"service": "/spawn", "type": "*", "md5sum": "*", "probe": True}
+SPAWN = {"service": "/spawn", "type": "turtlesim/Spawn", "md5sum": SPAWN_MD5, "probe": False, "id": 7, "seq": 1}
+PROBE = {"service": "/spawn", "type": "*", "md5sum": "*", "probe": True, "id": 0, "seq": 0}
+SERVE = {"id": 3, "service": "/spawn", "type": "turtlesim/Spawn", "md5sum": SPAWN_MD5}
 
 
 def spawn_request(name: str = "") -> bytes:
@@ -50,6 +53,8 @@ def test_the_call_headers_the_node_library_sends_are_accepted(header: dict) -> N
     ({**SPAWN, "probe": 1}, "'probe'"),
     ({**SPAWN, "extra": 1}, "'extra'"),
     ({k: v for k, v in SPAWN.items() if k != "service"}, "'service'"),
+    ({k: v for k, v in SPAWN.items() if k != "seq"}, "'seq'"),
+    ({**SPAWN, "id": -1}, "'id'"),
     ({**SPAWN, "service": "/" + "s" * 300}, "'service'"),
 ])
 def test_a_call_header_off_its_schema_is_a_frame_error_naming_the_field(header: dict, says: str) -> None:
@@ -105,19 +110,67 @@ def channel():
     made.close()
 
 
-def test_a_call_reaches_the_session_and_its_reply_goes_back_at_once(channel: Channel) -> None:
+def test_a_call_reaches_the_session_with_its_handle_and_number_and_gets_no_reply_at_once(channel: Channel) -> None:
     request = spawn_request("t2")
-    answer = ServiceReply(ch.SERVICE_OK, response=b"\x02\x00\x00\x00t2")
-    assert channel.step(ch.encode_header_bytes(ch.CALL, SPAWN, request), reply=answer) is not None
-    assert channel.calls == [ServiceCall("/spawn", "turtlesim/Spawn", SPAWN_MD5, False, request)]
-    assert channel.replies() == [({"status": "ok", "error": ""}, b"\x02\x00\x00\x00t2")]
+    assert channel.step(ch.encode_header_bytes(ch.CALL, SPAWN, request), reply=None) is not None
+    assert channel.calls == [ServiceCall("/spawn", "turtlesim/Spawn", SPAWN_MD5, False, request, 7, 1)]
+    assert channel.replies() == []
+
+
+def test_a_probe_is_answered_at_once(channel: Channel) -> None:
+    channel.step(ch.encode_header_bytes(ch.CALL, PROBE, b""), reply=ServiceReply(ch.SERVICE_UNAVAILABLE))
+    assert channel.calls[0].probe
+    assert channel.replies() == [({"status": "unavailable", "error": ""}, b"")]
 
 
 def test_a_call_of_a_srv_type_the_grader_does_not_know_is_passed_on_unchecked(channel: Channel) -> None:
     header = {**SPAWN, "service": "/static_map", "type": "nav_msgs/GetMap", "md5sum": "6" * 32}
-    channel.step(ch.encode_header_bytes(ch.CALL, header, b""), reply=ServiceReply(ch.SERVICE_UNAVAILABLE))
-    assert channel.calls[0].type == "nav_msgs/GetMap"
-    assert channel.replies() == [({"status": "unavailable", "error": ""}, b"")]
+    channel.step(ch.encode_header_bytes(ch.CALL, header, b"\x05"), reply=None)
+    assert channel.calls[0].type == "nav_msgs/GetMap" and channel.calls[0].request == b"\x05"
+
+
+def test_a_served_service_is_offered_and_its_answers_checked(channel: Channel) -> None:
+    events: list = []
+    response = CATALOG.encode("turtlesim/SpawnResponse", CATALOG.message_class("turtlesim/SpawnResponse")(name="t2"))
+    for frame in (ch.encode_json(ch.SERVE, SERVE),
+                  ch.encode_header_bytes(ch.RESPOND, {"id": 3, "seq": 1, "status": "ok", "error": ""}, response),
+                  ch.encode_json(ch.WAIT, {"wake_ns": 50})):
+        ch.write_all(channel.to_grader_w, frame)
+    channel.link.run_until_wait(10, events.append)
+    offer, answer = events
+    assert isinstance(offer, ServiceOffer) and offer.endpoint.topic == "/spawn" and offer.endpoint.registered_ns == 10
+    assert answer == ServiceAnswer(offer.endpoint, 1, "ok", "", response)
+
+
+@pytest.mark.parametrize("respond, data, says", [
+    ({"id": 4, "seq": 1, "status": "ok", "error": ""}, b"", "unknown or withdrawn service handle 4"),
+    ({"id": 3, "seq": 1, "status": "ok", "error": ""}, b"\x01", "is not a valid turtlesim/Spawn response"),
+    ({"id": 3, "seq": 1, "status": "failed", "error": "x"}, b"\x01", "RESPOND failed on /spawn carries 1 bytes"),
+    ({"id": 3, "seq": 1, "status": "unavailable", "error": ""}, b"", "'status'"),
+])
+def test_a_malformed_answer_is_a_protocol_violation(channel: Channel, respond: dict, data: bytes, says: str) -> None:
+    with pytest.raises(ProtocolViolation, match=says):
+        channel.step(ch.encode_json(ch.SERVE, SERVE), ch.encode_header_bytes(ch.RESPOND, respond, data))
+
+
+def test_a_service_offered_twice_under_one_handle_is_a_protocol_violation(channel: Channel) -> None:
+    with pytest.raises(ProtocolViolation, match="handle 3, which the node already uses"):
+        channel.step(ch.encode_json(ch.SERVE, SERVE), ch.encode_json(ch.SERVE, {**SERVE, "service": "/other"}))
+
+
+def test_service_deliveries_round_trip_in_a_batch() -> None:
+    deliveries = [(3, b"req", (1, ch.SERVICE_REQUEST, "")), (5, b"", (2, ch.SERVICE_FAILED, "no")), (9, b"msg")]
+    frame = ch.encode_batch({"t_ns": 1, "clock_ns": 0}, deliveries)
+    header, decoded = ch.decode_batch(frame[5:])
+    assert header == {"t_ns": 1, "clock_ns": 0} and decoded == deliveries
+
+
+@pytest.mark.parametrize("svc", [[[5, 1, "ok", ""]], [[0, -1, "ok", ""]], [[0, 1, "ok"]], "x"])
+def test_a_malformed_batch_svc_is_a_channel_error(svc) -> None:
+    head = json.dumps({"t_ns": 1, "clock_ns": 0, "svc": svc}).encode()
+    payload = len(head).to_bytes(4, "little") + head + (3).to_bytes(4, "little") + (1).to_bytes(4, "little") + b"x"
+    with pytest.raises(ch.ChannelError, match="svc"):
+        ch.decode_batch(payload)
 
 
 @pytest.mark.parametrize("header, request_bytes, says", [

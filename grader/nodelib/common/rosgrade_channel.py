@@ -10,7 +10,7 @@ import os
 import re
 import struct
 
-PROTOCOL = 7
+PROTOCOL = 8
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000
@@ -38,6 +38,8 @@ WAIT = 10
 CALL = 11
 PARAM = 12
 MOMENT = 13
+SERVE = 14
+RESPOND = 15
 # grader -> node
 START = 32
 BATCH = 33
@@ -53,17 +55,19 @@ SERVICE_UNAVAILABLE = "unavailable"  # nothing serves that name
 SERVICE_REFUSED = "refused"  # the server refused the connection (another srv type); error: the server's reason
 SERVICE_FAILED = "failed"  # the server's handler failed; error: the text the server sent ('' from a roscpp false)
 SERVICE_STATUSES = frozenset({SERVICE_OK, SERVICE_UNAVAILABLE, SERVICE_REFUSED, SERVICE_FAILED})
+# A BATCH delivery on a server's handle with this status is a request for it to answer (RESPOND).
+SERVICE_REQUEST = "request"
 
 KIND_NAMES = {
     HELLO: "HELLO", INIT: "INIT", ADVERTISE: "ADVERTISE", SUBSCRIBE: "SUBSCRIBE", UNREGISTER: "UNREGISTER",
     PUBLISH: "PUBLISH", LOG: "LOG", OUTPUT: "OUTPUT", EXCEPTION: "EXCEPTION", WAIT: "WAIT", CALL: "CALL",
-    PARAM: "PARAM", MOMENT: "MOMENT",
+    PARAM: "PARAM", MOMENT: "MOMENT", SERVE: "SERVE", RESPOND: "RESPOND",
     START: "START", BATCH: "BATCH", REPLY: "REPLY",
 }
 NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT, CALL,
-                        PARAM, MOMENT})
+                        PARAM, MOMENT, SERVE, RESPOND})
 GRADER_KINDS = frozenset({START, BATCH, REPLY})
-JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT, START, PARAM})
+JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT, START, PARAM, SERVE})
 
 _HEADER = struct.Struct("<IB")
 _ID = struct.Struct("<I")
@@ -108,10 +112,17 @@ def encode_batch(header: dict, deliveries: list[tuple[int, bytes]]) -> bytes:
     A delivery may be ``(handle, bytes, (callerid, latched))``: a node's publication, sent with the publishing
     node's name and whether its publisher latches (rospy keeps one connection per publisher); the header's
     ``from`` lists them as ``[delivery index, callerid, latched]``. The others are the world's.
+
+    A delivery on a service handle is ``(handle, bytes, (seq, status, error))``: a request for a server to answer
+    (status SERVICE_REQUEST, ``seq`` the grader's number for it) or the answer to a client's call ``seq`` (bytes
+    only when ``ok``); the header's ``svc`` lists them as ``[delivery index, seq, status, error]``.
     """
-    sources = [[i, item[2][0], item[2][1]] for i, item in enumerate(deliveries) if len(item) > 2]
+    sources = [[i, *item[2]] for i, item in enumerate(deliveries) if len(item) > 2 and len(item[2]) == 2]
     if sources:
         header = {**header, "from": sources}
+    services = [[i, *item[2]] for i, item in enumerate(deliveries) if len(item) > 2 and len(item[2]) == 3]
+    if services:
+        header = {**header, "svc": services}
     t_ns, clock_ns = header.get("t_ns"), header.get("clock_ns")
     if len(header) == 2 and type(t_ns) is int and type(clock_ns) is int and t_ns >= 0 and clock_ns >= 0:
         head = b'{"t_ns":%d,"clock_ns":%d}' % (t_ns, clock_ns)
@@ -164,6 +175,12 @@ def decode_batch(payload: bytes) -> tuple[dict, list[tuple]]:
             raise ChannelError("BATCH from must list [delivery index, callerid, latched] triples")
         index, callerid, latched = source
         deliveries[index] = (*deliveries[index][:2], (callerid, latched))
+    for item in header.pop("svc", None) or ():
+        if not (isinstance(item, list) and len(item) == 4 and type(item[0]) is int and 0 <= item[0] < len(deliveries)
+                and type(item[1]) is int and item[1] >= 0 and isinstance(item[2], str) and isinstance(item[3], str)):
+            raise ChannelError("BATCH svc must list [delivery index, seq, status, error] quadruples")
+        index, seq, status, error = item
+        deliveries[index] = (*deliveries[index][:2], (seq, status, error))
     return header, deliveries
 
 
@@ -182,13 +199,14 @@ def plain_wait(payload: bytes) -> tuple[bool, int | None]:
 
 
 def encode_header_bytes(kind: int, header: dict, data: bytes) -> bytes:
-    """A CALL or REPLY frame: ``u32 header length | header JSON | message bytes`` (a request or a response)."""
+    """A CALL, RESPOND or REPLY frame: ``u32 header length | header JSON | message bytes`` (a request or a response)."""
     head = json.dumps(header, separators=(",", ":")).encode()
     return encode(kind, _ID.pack(len(head)) + head + data)
 
 
 def split_header_bytes(payload: bytes) -> tuple[bytes, bytes]:
-    """The JSON header (still bytes: each side validates it its own way) and the message bytes of a CALL or REPLY."""
+    """The JSON header (still bytes: each side validates it its own way) and the message bytes of a CALL, RESPOND or
+    REPLY."""
     if len(payload) < 4:
         raise ChannelError("frame shorter than its header length")
     end = 4 + _ID.unpack_from(payload)[0]

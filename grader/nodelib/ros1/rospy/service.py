@@ -1,19 +1,23 @@
-"""rospy services as a client of the world's: calls and ``wait_for_service`` probes go to the grader in lockstep.
+"""rospy services over the grader channel: ServiceProxy calls, ``wait_for_service`` probes and ``rospy.Service``.
 
-The grader answers a CALL at once, at the node's current sim time, from the services the world serves (turtlesim's
-``/spawn``, ``/clear``, ...), so a call costs one library-call quantum of sim time and its outcome depends only on the
-run. Failures raise ServiceException with real rospy's words. A node's own ``rospy.Service`` is accepted but nobody
-can call it: the grader routes calls to the world only.
+The grader routes a CALL to the service's server (the world's, such as turtlesim's ``/spawn``, or a node's
+``rospy.Service``) and the answer comes back in a later BATCH, in sim time: the world answers at once, a node once
+its handler has run. The calling thread waits meanwhile, as rospy's does on its socket. Failures raise
+ServiceException with real rospy's words. A ``rospy.Service`` handles each request in a thread of its own (rospy
+runs one per connection) and answers what the handler returned, or the error rospy sends for it.
 """
 from __future__ import annotations
 
 import io
+import itertools
+import sys
+import traceback
 
 import genpy
 import rosgrade_channel as ch
 from rosgrade_node import runtime
 
-from . import core, names, rostime
+from . import core, names, rostime, topics
 from .exceptions import ROSException, ROSInterruptException
 from .msg import args_kwds_to_message
 
@@ -25,15 +29,9 @@ class ServiceException(Exception):
     """Exception class for service-related errors (not a ROSException, as in rospy)."""
 
 
-def _exchange(resolved: str, srv_type: str, md5sum: str, request: bytes, probe: bool) -> tuple[str, str, bytes]:
-    """One CALL to the grader, charged as a library call: (status, the server's error text, response bytes)."""
-    sched = runtime.scheduler
-    if not sched.holds_token():
+def _check_thread(resolved: str) -> None:
+    if not runtime.scheduler.holds_token():
         raise ServiceException("rosgrade: service [%s] was called from a thread rosgrade does not manage" % resolved)
-    rostime.charge()
-    reply, response = runtime.link.call(
-        {"service": resolved, "type": srv_type, "md5sum": md5sum, "probe": probe}, request)
-    return str(reply.get("status")), str(reply.get("error") or ""), response
 
 
 def _failure(resolved: str, status: str, error: str) -> ServiceException:
@@ -47,9 +45,12 @@ def _failure(resolved: str, status: str, error: str) -> ServiceException:
 
 
 def _served(resolved: str) -> bool:
-    """Whether the world serves ``resolved`` now (rospy's probe connection, md5sum '*')."""
-    status, _, _ = _exchange(resolved, "*", "*", b"", probe=True)
-    return status == ch.SERVICE_OK
+    """Whether anything serves ``resolved`` now (rospy's probe connection, md5sum '*'), charged as a library call."""
+    _check_thread(resolved)
+    rostime.charge()
+    reply, _ = runtime.link.call({"service": resolved, "type": "*", "md5sum": "*", "probe": True, "id": 0, "seq": 0},
+                                 b"")
+    return reply.get("status") == ch.SERVICE_OK
 
 
 def wait_for_service(service: str, timeout=None) -> None:
@@ -89,6 +90,15 @@ class ServiceProxy:
         self.response_class = service_class._response_class
         self.persistent = persistent
         self.headers = headers
+        # The answers come in BATCH deliveries on this handle, by call number.
+        self._handle = next(topics._handle_ids)
+        self._calls = itertools.count(1)
+        self._answers: dict[int, tuple[str, str, bytes]] = {}
+        runtime.scheduler.add_sink(self._handle, self._push, sources=True)
+
+    def _push(self, data: bytes, source) -> None:
+        seq, status, error = source
+        self._answers[seq] = (status, error, data)
 
     def wait_for_service(self, timeout=None) -> None:
         wait_for_service(self.resolved_name, timeout=timeout)
@@ -106,8 +116,18 @@ class ServiceProxy:
                             % (request.__class__, self.request_class))
         buff = io.BytesIO()
         request.serialize(buff)  # genpy's SerializationError goes to the caller, as in rospy
-        status, error, data = _exchange(self.resolved_name, self.service_class._type, self.service_class._md5sum,
-                                        buff.getvalue(), probe=False)
+        _check_thread(self.resolved_name)
+        rostime.charge()
+        seq = next(self._calls)
+        runtime.link.send(ch.encode_header_bytes(ch.CALL, {
+            "service": self.resolved_name, "type": self.service_class._type, "md5sum": self.service_class._md5sum,
+            "probe": False, "id": self._handle, "seq": seq}, buff.getvalue()))
+        sched = runtime.scheduler
+        while seq not in self._answers and not core._shutdown_flag:
+            sched.block(ready=lambda: seq in self._answers or core._shutdown_flag)
+        if seq not in self._answers:
+            raise ROSInterruptException("node shutdown interrupted service call")
+        status, error, data = self._answers.pop(seq)
         if status != ch.SERVICE_OK:
             raise _failure(self.resolved_name, status, error)
         return self.response_class().deserialize(data)
@@ -117,16 +137,80 @@ class ServiceProxy:
 
 
 class Service:
-    """A service nobody can call (the grader routes calls to the world only); kept so that nodes offering one run."""
+    """A service of this node: the grader routes each call to it; ``handler(request)`` runs in a thread of its own
+    and its return value is converted to the response as rospy converts it."""
 
     def __init__(self, name: str, service_class, handler, buff_size: int = 65536, error_handler=None) -> None:
         self.resolved_name = names.resolve_name(name)
         self.service_class = service_class
+        self.request_class = service_class._request_class
+        self.response_class = service_class._response_class
         self.handler = handler
+        self.error_handler = error_handler or self._default_error_handler
+        self.done = False
+        self._handle = next(topics._handle_ids)
+        runtime.scheduler.add_sink(self._handle, self._push, sources=True)
+        runtime.link.send_json(ch.SERVE, {"id": self._handle, "service": self.resolved_name,
+                                          "type": service_class._type, "md5sum": service_class._md5sum})
+
+    def _push(self, data: bytes, source):
+        """A request: rospy handles each connection in a thread of its own."""
+        seq = source[0]
+        return runtime.scheduler.spawn("Thread-%d" % seq, lambda: self._handle_request(seq, data))
+
+    def _handle_request(self, seq: int, data: bytes) -> None:
+        """Run the handler and RESPOND, as rospy's ServiceImpl._handle_request answers."""
+        status, error, response = ch.SERVICE_OK, "", b""
+        try:
+            request = self.request_class().deserialize(data)
+            answer = convert_return_to_response(self.handler(request), self.response_class)
+            buff = io.BytesIO()
+            answer.serialize(buff)
+            response = buff.getvalue()
+        except ServiceException as e:
+            status, error = ch.SERVICE_FAILED, "service cannot process request: %s" % e
+        except Exception as e:  # noqa: BLE001 - rospy sends any handler error to the caller
+            exc_type, exc_value, tb = sys.exc_info()
+            self.error_handler(e, exc_type, exc_value, tb)
+            status, error = ch.SERVICE_FAILED, "error processing request: %s" % e
+        if self.done:
+            return
+        runtime.link.send(ch.encode_header_bytes(ch.RESPOND, {"id": self._handle, "seq": seq, "status": status,
+                                                              "error": error[:ch.MAX_MESSAGE_CHARS]}, response))
+
+    @staticmethod
+    def _default_error_handler(e, exc_type, exc_value, tb) -> None:
+        core.logerr("Error processing request: %s\n%s" % (e, traceback.format_exception(exc_type, exc_value, tb)))
 
     def shutdown(self, reason: str = "") -> None:
-        """Nothing to unregister."""
+        """Stop serving (UNREGISTER): later calls find no server."""
+        if not self.done:
+            self.done = True
+            runtime.scheduler.remove_sink(self._handle)
+            runtime.link.send_json(ch.UNREGISTER, {"id": self._handle})
 
     def spin(self) -> None:
         from .client import spin
         spin()
+
+
+def convert_return_to_response(response, response_class):
+    """A handler's return value as the response: rospy's rules (a response, a dict of fields, one value, a tuple)."""
+    if isinstance(response, genpy.Message) and response._type == response_class._type:
+        return response
+    if type(response) == dict:  # noqa: E721 - rospy's own test
+        try:
+            return response_class(**response)
+        except AttributeError as e:
+            raise ServiceException("handler returned invalid value: %s" % str(e)) from None
+    if response is None:
+        raise ServiceException("service handler returned None")
+    if type(response) not in [list, tuple]:
+        try:
+            return response_class(response)
+        except TypeError as e:
+            raise ServiceException("handler returned invalid value: %s" % str(e)) from None
+    try:
+        return response_class(*response)
+    except TypeError as e:
+        raise ServiceException("handler returned wrong number of values: %s" % str(e)) from None

@@ -1,9 +1,9 @@
-"""rclpy.client.Client: calls to the world's services through the grader's CALL/REPLY, in lockstep.
+"""rclpy.client.Client: calls routed by the grader to the service's server (a node's or the world's), in sim time.
 
-The grader answers a CALL at once; the response is kept and the request's Future completes when an executor
-spinning the node takes it (as a real response arrives through the wait set). A call nobody answers (no such
-service, another srv type, a failing handler) never completes its Future, as with a ROS 2 server that never
-responds. ``wait_for_service`` polls every 0.25 s of sim time, as rclpy does.
+A CALL goes to the grader; the response comes back in a later BATCH on the client's handle and the request's Future
+completes when an executor spinning the node takes it (as a real response arrives through the wait set). A call
+nobody answers (no such service, another srv type) never completes its Future, as with a ROS 2 server that never
+matches. ``wait_for_service`` polls every 0.25 s of sim time, as rclpy does.
 """
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ from collections import deque
 
 import rosgrade_channel as ch
 
-from . import _runtime
+from . import _graph, _runtime
 from ._rclpy_pybind11 import DESTROYED, InvalidHandle
 from .task import Future
 
@@ -30,24 +30,23 @@ class Client:
         self._responses: deque[tuple[int, object]] = deque()
         self._sequence = 0
         self._destroyed = False
+        self._handle = next(_graph._handle_ids)
+        _runtime.scheduler().add_sink(self._handle, self._push, sources=True)
+
+    def _push(self, data: bytes, source) -> None:
+        """An answer: a response is kept for an executor to take; a failure never completes the Future."""
+        seq, status, _ = source
+        if status == ch.SERVICE_OK and not self._destroyed:
+            import rosgrade_rosidl
+            self._responses.append((seq, rosgrade_rosidl.deserialize(self.srv_type.Response, data)))
 
     def _check(self) -> None:
         if self._destroyed:
             raise InvalidHandle(DESTROYED)
 
-    def _exchange(self, request_bytes: bytes, probe: bool) -> tuple[str, bytes]:
-        from . import _graph
-        sched = _runtime.scheduler()
-        if not sched.holds_token():
+    def _check_thread(self) -> None:
+        if not _runtime.scheduler().holds_token():
             raise RuntimeError(f"rosgrade: service [{self.srv_name}] was called from a thread rosgrade does not manage")
-        _runtime.charge()
-        if probe:
-            name, type_hash = "*", "*"
-        else:
-            name, type_hash = _graph.type_of(self.srv_type)
-        reply, response = _runtime.link().call(
-            {"service": self.srv_name, "type": name, "md5sum": type_hash, "probe": probe}, request_bytes)
-        return str(reply.get("status")), response
 
     def call_async(self, request) -> Future:
         """Send ``request``; the Future completes when an executor spinning the node takes the response."""
@@ -59,9 +58,12 @@ class Client:
         future = Future()
         self._pending[self._sequence] = future
         future.add_done_callback(self.remove_pending_request)
-        status, data = self._exchange(rosgrade_rosidl.serialize(request), probe=False)
-        if status == ch.SERVICE_OK:
-            self._responses.append((self._sequence, rosgrade_rosidl.deserialize(self.srv_type.Response, data)))
+        self._check_thread()
+        _runtime.charge()
+        name, type_hash = _graph.type_of(self.srv_type)
+        _runtime.link().send(ch.encode_header_bytes(ch.CALL, {
+            "service": self.srv_name, "type": name, "md5sum": type_hash, "probe": False, "id": self._handle,
+            "seq": self._sequence}, rosgrade_rosidl.serialize(request)))
         return future
 
     def call(self, request, timeout_sec: float | None = None):
@@ -99,10 +101,13 @@ class Client:
                 break
 
     def service_is_ready(self) -> bool:
-        """Whether the world serves this service now (a probe CALL)."""
+        """Whether anything serves this service now (a probe CALL, answered at once)."""
         self._check()
-        status, _ = self._exchange(b"", probe=True)
-        return status == ch.SERVICE_OK
+        self._check_thread()
+        _runtime.charge()
+        reply, _ = _runtime.link().call({"service": self.srv_name, "type": "*", "md5sum": "*", "probe": True,
+                                         "id": 0, "seq": 0}, b"")
+        return reply.get("status") == ch.SERVICE_OK
 
     def wait_for_service(self, timeout_sec: float | None = None) -> bool:
         sleep_time = 0.25
@@ -122,6 +127,8 @@ class Client:
         return self
 
     def destroy(self) -> None:
+        if not self._destroyed:
+            _runtime.scheduler().remove_sink(self._handle)
         self._destroyed = True
         self._responses.clear()
 

@@ -2,12 +2,13 @@
 
 An executor waits (``scheduler.block``) until one of its nodes has work: a timer due (the wake time is the first
 /clock tick at or after its next call on sim time, or the exact wall/steady time otherwise), a delivered message, a
-service response, a triggered guard condition or task, the spin's future or timeout, or a context shutdown. One
-wait gives a list of ready work in rclpy's order (tasks, then per node: timers, the /clock subscription,
-subscriptions, guard conditions, clients); each ``spin_once`` runs the next item, and waits again only once the list
-is used up. A SingleThreadedExecutor runs callbacks in the spinning thread, so a callback that blocks starves
-everything else, the node's clock included. ``spin()`` applies a new /clock when it looks at a node instead of
-treating it as an item of its own (the same times, without a wake-up per tick); ``spin_once`` counts it as work.
+service response or request, a triggered guard condition or task, the spin's future or timeout, or a context
+shutdown. One wait gives a list of ready work in rclpy's order (tasks, then per node: timers, the /clock
+subscription, subscriptions, guard conditions, clients, services); each ``spin_once`` runs the next item, and waits
+again only once the list is used up. A SingleThreadedExecutor runs callbacks in the spinning thread, so a
+callback that blocks starves everything else, the node's clock included. ``spin()`` applies a new /clock when it
+looks at a node instead of treating it as an item of its own (the same times, without a wake-up per tick);
+``spin_once`` counts it as work.
 """
 from __future__ import annotations
 
@@ -147,6 +148,7 @@ class Executor:
             work += [(s, "sub", node) for s in node._subscriptions if s.has_message() and self.can_execute(s)]
             work += [(g, "guard", node) for g in node._guards if g._triggered and self.can_execute(g)]
             work += [(c, "client", node) for c in node._clients if c.has_response() and self.can_execute(c)]
+            work += [(s, "service", node) for s in node._services if s.has_request() and self.can_execute(s)]
         return work
 
     def _anything_ready(self, condition) -> bool:
@@ -154,7 +156,7 @@ class Executor:
             return True
         for node in self._nodes:
             if any(s.has_message() for s in node._subscriptions) or any(g._triggered for g in node._guards) \
-                    or any(c.has_response() for c in node._clients):
+                    or any(c.has_response() for c in node._clients) or any(s.has_request() for s in node._services):
                 return True
         return False
 
@@ -218,6 +220,8 @@ class Executor:
             return not entity._destroyed and entity.is_ready()
         if kind == "client":
             return entity.has_response()
+        if kind == "service":
+            return entity.has_request()
         if kind == "guard":
             return entity._triggered
         return True
@@ -247,6 +251,9 @@ class Executor:
                 return None
             future, response = taken
             return lambda: future.set_result(response)
+        if kind == "service":
+            request, header = entity.take_request()
+            return lambda: entity.send_response(entity.callback(request, entity.srv_type.Response()), header)
         return None
 
     def _run(self, item, call) -> None:
