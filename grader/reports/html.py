@@ -22,6 +22,7 @@ table{border-collapse:collapse;width:100%;margin:.5rem 0}th,td{border:1px solid 
 th{background:#f4f4f4}.pass{color:#176f2c}.fail{color:#b3261e}.score{font-size:1.2rem;font-weight:600}
 .warn{background:#fff4e5;border-left:4px solid #f0a020;padding:.5rem .75rem}figure{margin:1rem 0}
 figure img{max-width:100%;border:1px solid #eee}figcaption{font-size:.85rem;color:#555}code{background:#f4f4f4;padding:0 .2rem}
+th,td{overflow-wrap:anywhere}@media (max-width:40rem){body{margin:1rem auto;padding:0 .5rem}table{font-size:.85rem}th,td{padding:.25rem}}
 """
 
 
