@@ -2,7 +2,9 @@
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
+import platform
 import secrets
 import shutil
 import signal
@@ -43,8 +45,23 @@ def marker_prefix(grader_pid: int | None = None) -> str:
     return f"{grader_pid or os.getpid()}-"
 
 
+@functools.cache
+def _baseline_kernels() -> dict[str, str]:
+    """numpy and OpenBLAS pick their kernels for the CPU they run on (AVX-512 arctan2, FMA dot products), so a node's
+    numpy gives other last bits on another machine, and its commands and recording follow. Held to their x86-64
+    baseline kernels, a node computes the same bits on every x86-64 grader (MuJoCo already needs AVX of it)."""
+    if platform.machine() not in ("x86_64", "AMD64"):
+        return {}
+    import numpy  # the grader's own, which is what the node's interpreter imports
+
+    umath = getattr(getattr(numpy, "_core", None), "_multiarray_umath", None) \
+        or numpy.core._multiarray_umath  # numpy 1.x
+    return {"NPY_DISABLE_CPU_FEATURES": " ".join(umath.__cpu_dispatch__), "OPENBLAS_CORETYPE": "Sandybridge"}
+
+
 def node_environment(spec: NodeSpec, channel: str, home: Path | str) -> dict[str, str]:
     env = {k: os.environ[k] for k in _KEPT_ENV if k in os.environ}
+    env.update(_baseline_kernels())
     env.update(
         HOME=str(home),
         TMPDIR=str(home),

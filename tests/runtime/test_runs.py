@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import platform
 import multiprocessing
 from pathlib import Path
 
@@ -186,3 +187,12 @@ def test_the_node_runs_on_its_runs_cpu_but_sees_four(cpu_view_log):
 
 def test_the_node_is_a_batch_task_whose_wake_ups_do_not_preempt_the_grader(cpu_view_log):
     assert _printed(cpu_view_log, "policy") == str(os.SCHED_BATCH)
+
+
+@pytest.mark.skipif(platform.machine() != "x86_64", reason="the baseline kernels are chosen on x86-64 only")
+def test_the_nodes_numpy_runs_its_baseline_kernels_on_every_cpu(cpu_view_log):
+    # Not AVX-512's arctan2 or an FMA dot product: the same bits on every x86-64 grader.
+    assert _printed(cpu_view_log, "arctan2").startswith("baseline")
+    core, dot = _printed(cpu_view_log, "blas").split()
+    assert core == "Sandybridge"
+    assert float.fromhex(dot) == ((0.1 * 0.3 + 0.2 * 0.9) + 0.3 * 0.5) + 0.7 * 0.1
