@@ -1,0 +1,54 @@
+"""The grader as a caller: a scenario's service_calls go out at their times as `ros2 service call` would make them,
+one after the other, waiting for a service that is not offered yet; the world's services are called the same way."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from grader.metrics.run import service_calls
+from grader.recording import Recording
+from grader.runtime import NodeSpec, RunSpec
+from grader.runtime.session import run
+from sim import Scenario
+
+pytestmark = pytest.mark.slow
+
+NODES = Path(__file__).resolve().parent / "nodes" / "services"
+ADD = "example_interfaces/srv/AddTwoInts"
+
+
+def _calls(*times: float) -> list[dict]:
+    return [{"t": t, "service": "/add_two_ints", "type": ADD, "request": {"a": i, "b": 10}}
+            for i, t in enumerate(times)]
+
+
+def test_calls_wait_for_a_service_offered_late_then_follow_one_another(tmp_path) -> None:
+    scenario = Scenario(duration=3.0, service_calls=_calls(0.2, 0.3, 2.5))
+    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=NODES / "late_server.py", flavour="ros2"),)),
+        tmp_path / "late.mcap", tmp_path / "late.log")
+    calls = service_calls(Recording.open(tmp_path / "late.mcap"))
+    # the server offers /add_two_ints after its 1 s sleep (at 3.0 s): the first two calls go out then, in order
+    assert [(round(c.t, 3), c.request["a"], c.response) for c in calls] == [
+        (3.0, 0, {"sum": 10}), (3.0, 1, {"sum": 11}), (4.5, 2, {"sum": 12})]
+
+
+def test_a_call_to_a_service_never_offered_is_never_made(tmp_path) -> None:
+    scenario = Scenario(duration=1.0, service_calls=_calls(0.2))
+    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=NODES / "add_client.py", flavour="ros2"),)),
+        tmp_path / "none.mcap", tmp_path / "none.log")
+    assert service_calls(Recording.open(tmp_path / "none.mcap")) == ()
+
+
+def test_the_worlds_services_are_called_through_the_same_routing(tmp_path) -> None:
+    spawn = {"t": 0.5, "service": "/spawn", "type": "turtlesim/Spawn",
+             "request": {"x": 2.0, "y": 3.0, "theta": 0.0, "name": "leo"}}
+    scenario = Scenario(robot="turtlesim", duration=1.0, service_calls=[spawn])
+    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=NODES / "rospy_client.py"),)),
+        tmp_path / "spawn.mcap", tmp_path / "spawn.log")
+    recording = Recording.open(tmp_path / "spawn.mcap")
+    assert [(round(c.t, 3), c.response) for c in service_calls(recording)] == [(2.5, {"name": "leo"})]
+    topics = {(i.topic, i.callerid, i.origin) for i in recording.topics()}
+    assert ("/rosgrade/service/spawn/request", "/rosgrade", "grader") in topics
+    assert ("/rosgrade/service/spawn/response", "/turtlesim", "world") in topics
+    assert any(topic == "/leo/pose" for topic, _, _ in topics)
