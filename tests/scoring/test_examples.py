@@ -33,8 +33,19 @@ def _reference_scripts(task: str) -> list[Path]:
     return started or [script for package in packages.values() for script in package.rglob("*.py")]
 
 
+# Tasks of ROS 2 interfaces only (example_interfaces): their reference is an ament_python package of rclpy nodes.
+ROS2_TASKS = {"add_two_ints": "py_srvcli"}
+
+
 @pytest.mark.parametrize("task", sorted(RUBRICS))
 def test_every_task_has_an_executable_reference_node(task: str) -> None:
+    if task in ROS2_TASKS:
+        package = ROOT / "reference_solutions_ros2" / ROS2_TASKS[task]
+        for node in RUBRICS[task].nodes:
+            text = next(package.rglob(node.script)).read_text(encoding="utf-8")
+            assert "rclpy" in text and f"{node.script[:-3]} = " in (package / "setup.py").read_text()
+            compile(text, node.script, "exec")
+        return
     for path in _reference_scripts(task):
         text = path.read_text(encoding="utf-8")
         assert text.startswith("#!/usr/bin/env python3\n") and "rospy" in text

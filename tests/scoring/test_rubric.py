@@ -27,6 +27,7 @@ CONTRACT = {
     "turtle_goal": ["reaches_goal", "stops", "no_wall_hit"],
     "turtle_clean": ["coverage", "no_wall_hit", "finishes"],
     "turtle_launch": ["drives", "direction", "turns"],
+    "add_two_ints": ["serves", "sums"],
 }
 
 MINIMAL = '''
