@@ -67,7 +67,7 @@ def test_one_overshot_corner_costs_its_share() -> None:
     segs[3] = (math.radians(105.0) / 0.5, 0.0, 0.5)  # the second corner turns 105 degrees
     corner = _criterion("move_square", _square(segs), "corner_angle")
     assert 0.8 * corner.max_score < corner.score < corner.max_score
-    assert "turns were within 7.5°" in corner.feedback
+    assert "turns between sides were within 7.5°" in corner.feedback and "They measured" in corner.feedback
 
 
 @pytest.mark.parametrize("ctrl_c", [None, 130.0])
