@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import hashlib
 import re
+from collections.abc import Mapping
 from functools import lru_cache
 
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
@@ -79,10 +80,22 @@ class MessageCatalog:
         """The spelling this catalog records and compares: ``pkg/Name``."""
         return ros1_type_name(type_name)
 
-    def __init__(self) -> None:
+    def __init__(self, extra: Mapping[str, tuple] | None = None, services: Mapping[str, str] | None = None) -> None:
+        """The built-in types, plus ``extra`` rosbags definitions (a submission's own) and md5sums of the service
+        types among them (``pkg/Name``)."""
         self._store = _catalog_typestore()
+        if extra:
+            self._store.register(dict(extra))
+        self._service_md5s = {name: hashlib.md5((request + response).encode()).hexdigest()
+                              for name, (request, response) in _SERVICES.items()}
+        self._service_md5s.update(services or {})
         self._msgdefs: dict[str, tuple[str, str]] = {}
         self._store_names: dict[str, str] = {}  # any accepted spelling -> rosbags name, for the hot decode path
+
+    @property
+    def typestore(self) -> Typestore:
+        """The rosbags type store behind the catalog (to derive definitions and md5 texts from)."""
+        return self._store
 
     def types(self) -> list[str]:
         """All known message type names, ROS 1 spelling, sorted."""
@@ -152,20 +165,17 @@ class MessageCatalog:
         """The message type of a service's ``part`` ("Request" or "Response"): ``pkg/NameRequest``."""
         return ros1_type_name(service_name) + part
 
-    @staticmethod
-    def known_service(service_name: str) -> bool:
+    def known_service(self, service_name: str) -> bool:
         """Whether ``service_name`` (any string) is a service type of this catalog."""
         match = _TYPE_NAME.match(service_name)
-        return match is not None and f"{match.group(1)}/{match.group(2)}" in _SERVICES
+        return match is not None and f"{match.group(1)}/{match.group(2)}" in self._service_md5s
 
-    @staticmethod
-    def service_md5sum(service_name: str) -> str:
+    def service_md5sum(self, service_name: str) -> str:
         """The ROS 1 md5sum of a known service (md5 of request and response md5 texts)."""
         try:
-            request, response = _SERVICES[ros1_type_name(service_name)]
+            return self._service_md5s[ros1_type_name(service_name)]
         except KeyError:
             raise RecordingError(f"unknown service type {service_name!r}") from None
-        return hashlib.md5((request + response).encode()).hexdigest()
 
 
 def _reason(exc: BaseException) -> str:

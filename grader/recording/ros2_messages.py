@@ -7,6 +7,7 @@ and rosbag2 spell them; ``pkg/Name`` is accepted too.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Mapping
 from functools import lru_cache
 
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
@@ -15,7 +16,7 @@ from rosbags.typesys.store import Typestore
 from grader.nodelib.ros2.rosgrade_rosidl._defs import SERVICES as NODE_SERVICE_HASHES
 from grader.recording.errors import RecordingError
 
-_TYPE_NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)/(?:(msg|srv)/)?([A-Za-z][A-Za-z0-9_]*)$")
+_TYPE_NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)/(?:(msg|srv|action)/)?([A-Za-z][A-Za-z0-9_]*)$")
 
 _EXTRA_TYPES = {
     "turtlesim/msg/Pose": "float32 x\nfloat32 y\nfloat32 theta\n\nfloat32 linear_velocity\nfloat32 angular_velocity\n",
@@ -74,8 +75,13 @@ class Ros2Catalog:
     message_encoding = "cdr"
     log_levels = frozenset({10, 20, 30, 40, 50})  # rcl_interfaces/msg/Log severities
 
-    def __init__(self) -> None:
+    def __init__(self, extra: Mapping[str, tuple] | None = None, services: Iterable[str] = ()) -> None:
+        """The built-in types, plus ``extra`` rosbags definitions (a submission's own, with the types rosidl
+        derives from its services and actions) and the service types among them."""
         self._store = _catalog_typestore()
+        if extra:
+            self._store.register(dict(extra))
+        self._services = frozenset(SERVICES) | frozenset(services)
         self._msgdefs: dict[str, str] = {}
         self._hashes: dict[str, str] = {}
 
@@ -89,6 +95,11 @@ class Ros2Catalog:
         if name not in self._store.fielddefs:
             raise RecordingError(f"unknown message type {type_name!r}")
         return name
+
+    @property
+    def typestore(self) -> Typestore:
+        """The rosbags type store behind the catalog (to derive definitions and hashes from)."""
+        return self._store
 
     def types(self) -> list[str]:
         return sorted(self._store.fielddefs)
@@ -134,24 +145,32 @@ class Ros2Catalog:
     @staticmethod
     def service_part(service_name: str, part: str) -> str:
         """The message type of a service's ``part`` ("Request" or "Response"): ``pkg/srv/Name_Request``."""
-        match = _TYPE_NAME.match(service_name)
-        if match is None:
+        name = _service_name(service_name)
+        if not name:
             raise RecordingError(f"{service_name!r} is not a service type name (expected 'package/srv/Type')")
-        return f"{match.group(1)}/srv/{match.group(3)}_{part}"
+        return f"{name}_{part}"
 
-    @staticmethod
-    def known_service(service_name: str) -> bool:
-        match = _TYPE_NAME.match(service_name)
-        return match is not None and f"{match.group(1)}/srv/{match.group(3)}" in SERVICES
+    def known_service(self, service_name: str) -> bool:
+        return _service_name(service_name) in self._services
 
     def service_md5sum(self, service_name: str) -> str:
         """The RIHS01 hash of a known service (what a ROS 2 client and server must agree on): the node library's,
-        rosidl's hash of the service's request, response and event, for the services it has; else its request's."""
-        match = _TYPE_NAME.match(service_name)
-        name = "" if match is None else f"{match.group(1)}/srv/{match.group(3)}"
-        if name not in SERVICES:
+        rosidl's hash of the service's request, response and event, for the services it has or was given; else its
+        request's."""
+        name = _service_name(service_name)
+        if name not in self._services:
             raise RecordingError(f"unknown service type {service_name!r}")
-        return NODE_SERVICE_HASHES.get(name) or self._store.hash_rihs01(f"{name}_Request")
+        if name in NODE_SERVICE_HASHES:
+            return NODE_SERVICE_HASHES[name]
+        return self._store.hash_rihs01(name if name in self._store.fielddefs else f"{name}_Request")
+
+
+def _service_name(service_name: str) -> str:
+    """``pkg/srv/Name`` for ``pkg/Name`` or ``pkg/srv/Name``; an action's own services keep ``pkg/action/``."""
+    match = _TYPE_NAME.match(service_name)
+    if match is None:
+        return ""
+    return f"{match.group(1)}/{'action' if match.group(2) == 'action' else 'srv'}/{match.group(3)}"
 
 
 def _reason(exc: BaseException) -> str:

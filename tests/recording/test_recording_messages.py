@@ -133,8 +133,8 @@ def test_definitions_are_cached(catalog: MessageCatalog) -> None:
         ("std_srvs/SetBool", "09fb03525b03e7ea1fd3992bafd87e16"),
     ],
 )
-def test_std_srvs_md5(service: str, md5: str) -> None:
-    assert MessageCatalog.service_md5sum(service) == md5
+def test_std_srvs_md5(catalog: MessageCatalog, service: str, md5: str) -> None:
+    assert catalog.service_md5sum(service) == md5
 
 
 def test_std_srvs_request_and_response_decode(catalog: MessageCatalog) -> None:
