@@ -124,9 +124,10 @@ class Browser:
         return result["result"].get("value")
 
     def click(self, selector: str) -> None:
-        """A real mouse click at the middle of the first element matching ``selector`` (scrolled into view)."""
+        """A real mouse click at the middle of the first element matching ``selector`` (scrolled into view; a link
+        that wraps is clicked on its first line)."""
         box = self.js(f"(() => {{ const e = document.querySelector({json.dumps(selector)}); e.scrollIntoView("
-                      "{block: 'center'}); const r = e.getBoundingClientRect(); "
+                      "{block: 'center'}); const r = e.getClientRects()[0]; "
                       "return [r.left + r.width / 2, r.top + r.height / 2]; })()")
         for kind in ("mousePressed", "mouseReleased"):
             self.page("Input.dispatchMouseEvent", {"type": kind, "x": box[0], "y": box[1], "button": "left",

@@ -45,10 +45,11 @@ VIEW_MARGIN_M = 0.5
 MIN_ASPECT = 0.6
 TURTLE_M = 0.45  # the turtle image's size in the window
 MAX_HITS = 20  # wall hits marked on the timeline
-# Quantities that say when something was decided, and what they count from: the start or the Ctrl+C.
-MOMENTS = (("decided_at_s", "start"), ("first_hit_s", "start"), ("stopped_at_s", "start"),
-           ("exit_delay", "ctrl_c"), ("zero_command_delay", "ctrl_c"), ("rest_time", "ctrl_c"),
-           ("judged_until_s", "start"))
+# Quantities that say when a criterion was decided, in seconds after the start: a metric that knows reports
+# decided_at_s; the others are older metrics' own times (the first wall hit, when the robot stopped).
+FROM_START = ("decided_at_s", "first_hit_s", "stopped_at_s", "judged_until_s")
+# Those counted from the Ctrl+C: the moment only when they are what the criterion judges (a NaN: never, so the end).
+AFTER_CTRL_C = ("rest_time", "zero_command_delay", "exit_delay")
 
 
 @dataclass(frozen=True)
@@ -210,19 +211,21 @@ def _goal(task: TaskReport, scenario: str) -> list[float] | None:
     return None
 
 
-def _moment(measured: dict[str, Any], start: float, ctrl_c: float | None) -> float | None:
-    """When the criterion was decided, in seconds after the start, from the first quantity that says so."""
-    for name, origin in MOMENTS:
+def _moment(measured: dict[str, Any], start: float, ctrl_c: float | None, end: float) -> float:
+    """When the criterion was decided, in seconds after the start (``end``: when the run ended)."""
+    def number(name: str) -> float | None:
         value = measured.get(name)
-        if isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value):
-            if origin == "start":
-                return float(value)
-            if ctrl_c is not None:
-                return ctrl_c - start + float(value)
-    return None
+        finite = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+        return float(value) if finite else None
+
+    own = next(iter(measured), None)  # scoring puts the criterion's own quantity first
+    if own in AFTER_CTRL_C and ctrl_c is not None:
+        after = number(own)
+        return end if after is None else ctrl_c - start + after
+    return next((at for name in FROM_START if (at := number(name)) is not None), end)
 
 
-def _events_of(task: TaskReport, scenario: str, run: RunData, start: float) -> list[list[Any]]:
+def _events_of(task: TaskReport, scenario: str, run: RunData, start: float, end: float) -> list[list[Any]]:
     """[t, kind, text, criterion id] for Ctrl+C, the node's exit, wall hits and the criteria decided in this run."""
     events: list[list[Any]] = []
     ctrl_c = run.shutdown_time()
@@ -237,11 +240,9 @@ def _events_of(task: TaskReport, scenario: str, run: RunData, start: float) -> l
     for c in task.criteria:
         if c.scenario != scenario:
             continue
-        at = _moment(c.measured, start, ctrl_c)
-        if at is not None:
-            measured = criterion_measured(task, c)
-            text = f"{'✔' if c.passed else '✘'} {c.title or c.id}" + (f": {measured}" if measured else "")
-            events.append([_r(at, 2), "pass" if c.passed else "fail", text, c.id])
+        measured = criterion_measured(task, c)
+        text = f"{'✔' if c.passed else '✘'} {c.title or c.id}" + (f": {measured}" if measured else "")
+        events.append([_r(_moment(c.measured, start, ctrl_c, end), 2), "pass" if c.passed else "fail", text, c.id])
     return sorted(events, key=lambda e: (e[0], e[1], e[2]))
 
 
@@ -334,8 +335,9 @@ def replay_of(task: TaskReport, scenario: str, recording: Any, run: RunData | No
     if goal is not None:
         data["goal"] = goal
     data["lines"], data["more_lines"] = _lines(run, start)
-    data["events"] = _events_of(task, scenario, run, start)
-    times = [float(p.t[i]) - start for p in bodies.values() for i in (0, -1)] + [e[0] for e in data["events"]]
+    times = [float(p.t[i]) - start for p in bodies.values() for i in (0, -1)]
+    data["events"] = _events_of(task, scenario, run, start, end=max([0.0, *times]))
+    times += [e[0] for e in data["events"]]
     data["span"] = [_r(min([0.0, *times]), 2), _r(max([0.0, *times]), 2)]
     for coarse in COARSER:  # finer than a pixel where it fits, coarser where a long run would not
         data["bodies"] = {name: _thin_poses(p, start, tolerance * coarse, coarse) for name, p in bodies.items()}

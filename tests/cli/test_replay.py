@@ -122,3 +122,11 @@ def test_bare_rosgrade_shows_what_it_grades_and_an_example_per_command(capsys):
     for command in ("check", "batch", "score", "tasks", "bench", "gradescope-package", "launch", "rubric check"):
         assert f"  rosgrade {command} " in text
     assert max(len(line) for line in text.splitlines()) <= 80
+
+
+def test_a_criterion_is_placed_where_its_own_quantity_says():
+    never_at_rest = runs.criterion("stops_at_ctrl_c", False, "nominal", rest_time=None, exit_delay=0.4)
+    travel = runs.criterion("travel", True, "nominal", travelled=2.0, exit_delay=0.4, judged_until_s=15.0)
+    task = runs.robot_task().model_copy(update={"criteria": [never_at_rest, travel]})
+    replay = replay_of(task, "nominal", runs.Recording("turtlebot3_waffle"), runs.robot_run())
+    assert dict(replay.moments) == {"stops_at_ctrl_c": 19.98, "travel": 15.0}  # never at rest: the end of the run
