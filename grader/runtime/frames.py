@@ -86,6 +86,7 @@ class ExceptionReport(_Frame):
 
 class Wait(_Frame):
     wake_ns: Annotated[int, Field(ge=0)] | None
+    busy: bool = False
 
 
 class Call(_Frame):

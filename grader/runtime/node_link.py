@@ -49,6 +49,7 @@ class Endpoint:
     closed: bool = False
     dropped_before_connect: int = 0
     latched: Latched | None = None  # a latched publisher's last message
+    ready_ns: int | None = None  # when a publisher connects, once the session has decided it (session._ready_ns)
     last_data: bytes | None = None  # a publisher's last message (the node keeps it too: see inert batches)
 
 
@@ -142,6 +143,7 @@ class NodeState:
     name: str | None = None
     init_ns: int | None = None
     disable_signals: bool = False
+    busy: bool = False  # its last WAIT was a busy loop's (a thread still runnable), not every thread blocked
     publishers: dict[int, Endpoint] = field(default_factory=dict)
     subscribers: dict[int, Endpoint] = field(default_factory=dict)
     services: dict[int, Endpoint] = field(default_factory=dict)  # what it serves (topic: the service's name)
@@ -295,9 +297,11 @@ class NodeLink:
                 raise ProtocolViolation(f"sent {ch.KIND_NAMES.get(kind, kind)} after a batch of moments without "
                                         "saying first which moment it was at (MOMENT)")
             if kind == ch.WAIT:
-                plain, wake = ch.plain_wait(payload)
+                plain, wake, busy = ch.plain_wait(payload)
                 if not plain:
-                    wake = self._parse(kind, payload).wake_ns
+                    frame = self._parse(kind, payload)
+                    wake, busy = frame.wake_ns, frame.busy
+                self.state.busy = busy
                 # A wake-up in the past would let a node stall the world forever: it costs at least one quantum.
                 return max(wake, t_ns + ch.CALL_QUANTUM_NS) if wake is not None else None
             if inert is not None and not acted and not self._inert(kind, payload, inert):

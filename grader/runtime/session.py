@@ -40,6 +40,13 @@ from sim import WORLD_NODE_NAMES, CommandSample, TurtlesimWorld, World, WorldTop
 # Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
 # published before that are lost. A new subscriber to a running publisher (Gazebo's /odom) gets the next message.
 CONNECT_DELAY_NS = 50_000_000
+# ...unless the node is in a busy loop then: rospy's threads that answer the subscriber (requestTopic, the TCPROS
+# header) wait for the GIL. Real rospy 1.15.15, busy from the Publisher on: 0.03-0.16 s, median 0.10 s (13 runs).
+BUSY_CONNECT_DELAY_NS = 100_000_000
+# ROS 2: a node's DDS participant (made with its first node) discovers the world's and is discovered this long
+# after: its endpoints made before match then, and /clock and the world's topics reach it from then on. Real rclpy
+# (Fast DDS) is bimodal, 0.001-0.23 s or about 3 s (a missed announcement); this is the fast mode. DEVELOPERS.md.
+DISCOVERY_NS = 100_000_000
 # The robot's base as a receiver of latched messages (node subscribers are (node index, handle) pairs).
 ROBOT = "robot"
 # Publications that never reached a subscriber are recorded under this prefix, apart from what the robot received.
@@ -157,6 +164,7 @@ class Session:
         self.log_path = log
         # One wire flavour per run: the client library of its nodes (rospy: ROS 1, rclpy: ROS 2).
         self.wire = wire_for(spec.flavour)
+        self._discovery_ns = DISCOVERY_NS if self.wire.name == "ros2" else 0
         self.catalog = self.wire.catalog
         # The velocity command types the robot's base takes (the scenario's choice, else the flavour's robot).
         self.command_types = frozenset(self.wire.canonical(t) for t in spec.scenario.command_types) \
@@ -363,6 +371,7 @@ class Session:
                 timing.add("world messages (encode, record, queue)", time.perf_counter() - stepped)
             if t_next >= horizon:
                 return
+            self._decide_connections(alive, t_next)
             self.caller.tick(t_next)
             shutdown = None
             if self.shutdown_ns is not None and not self.shutdown_sent and t_next >= self.shutdown_ns and alive:
@@ -433,10 +442,17 @@ class Session:
         finally:
             self._ahead = None
 
-    @staticmethod
-    def _clock_ns(link: NodeLink, t: int) -> int:
-        """/clock as the node has it at t: the last 10 ms tick (0 until init_node, as before /clock connects)."""
-        return (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if link.state.init_ns is not None else 0
+    def _clock_ns(self, link: NodeLink, t: int) -> int:
+        """/clock as the node has it at t: the last 10 ms tick (0 until init_node, as before /clock connects; for
+        rclpy, until discovery)."""
+        init = link.state.init_ns
+        return (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if init is not None and t >= init + self._discovery_ns \
+            else 0
+
+    def _hears_world(self, node: _Node, t: int) -> bool:
+        """Whether the world's topics reach the node's subscribers at t (rclpy: from discovery on)."""
+        init = node.link.state.init_ns
+        return not self._discovery_ns or (init is not None and t >= init + self._discovery_ns)
 
     # -- running the world ahead of a node (batches of moments) ------------------------------------------------
     def _speculate(self, node: _Node, t: int) -> _Speculation | None:
@@ -450,8 +466,8 @@ class Session:
         encoded but not yet recorded."""
         snapshot = getattr(self.world, "snapshot", None)
         if not MAX_MOMENTS or snapshot is None or node.term_ns is not None or sum(n.alive for n in self.nodes) != 1 \
-                or node.link.state.init_ns is None:
-            return None
+                or node.link.state.init_ns is None or t < node.link.state.init_ns + self._discovery_ns:
+            return None  # (before rclpy's discovery: the node would take its own wake-ups' /clock ticks as given)
         if node.pause:
             node.pause -= 1
             return None
@@ -483,7 +499,8 @@ class Session:
             timing.add("physics and sensors", stepped - started)
             encoded = [self._encode(sample) for sample in samples]
             ahead.items += encoded
-            deliveries = [(sub.ident, item.data) for item in encoded if item.to_nodes
+            deliveries = [(sub.ident, item.data) for item in encoded
+                          if item.to_nodes and self._hears_world(node, item.t_ns)
                           for sub in _listening(node, item.topic, item.type)]
             if deliveries:
                 ahead.later.append((target, self._clock_ns(node.link, target), deliveries))
@@ -651,8 +668,25 @@ class Session:
     # -- connections (as a ROS 1 master and TCPROS would make them) -------------------------------------------
     @staticmethod
     def _ready_ns(publisher: Endpoint) -> int:
-        """When a node's publisher has connected to the subscribers that existed when it registered."""
-        return publisher.registered_ns + CONNECT_DELAY_NS
+        """When a node's publisher has connected to the subscribers that existed when it registered (at the earliest
+        CONNECT_DELAY_NS after, until _decide_connections has decided)."""
+        return publisher.ready_ns if publisher.ready_ns is not None else publisher.registered_ns + CONNECT_DELAY_NS
+
+    def _decide_connections(self, alive: list[_Node], t: int) -> None:
+        """Fix when publishers connect, before any node runs at t. rclpy: at discovery at the earliest. rospy: once
+        CONNECT_DELAY_NS has passed, by what the node was doing then (its last WAIT spans that time): blocked, at
+        once; in a busy loop, BUSY_CONNECT_DELAY_NS after it registered."""
+        for node in alive:
+            init = node.link.state.init_ns
+            for pub in node.link.state.publishers.values():
+                if pub.ready_ns is not None or pub.closed:
+                    continue
+                due = pub.registered_ns + CONNECT_DELAY_NS
+                if self._discovery_ns:
+                    if init is not None:
+                        pub.ready_ns = max(due, init + self._discovery_ns)
+                elif t >= due:
+                    pub.ready_ns = pub.registered_ns + BUSY_CONNECT_DELAY_NS if node.link.state.busy else due
 
     def _receivers(self, publisher: Endpoint, t: int) -> list:
         """Who a node's publisher is connected to at t: the robot's base (ROBOT) and (node index, subscriber handle)
@@ -669,9 +703,10 @@ class Session:
                           and t >= sub.registered_ns]
         return found
 
-    def _publishers_of(self, subscriber: Endpoint, t: int) -> set:
+    def _publishers_of(self, node: _Node, subscriber: Endpoint, t: int) -> set:
         """The peers (the world, or node indexes) whose publishers a node's subscriber is connected to at t."""
-        peers: set = {ROBOT} if (subscriber.topic, subscriber.type) in self.world_topics else set()
+        world = (subscriber.topic, subscriber.type) in self.world_topics and self._hears_world(node, t)
+        peers: set = {ROBOT} if world else set()
         for index, other in enumerate(self.nodes):
             if other.alive and any(pub.topic == subscriber.topic and pub.type == subscriber.type and not pub.closed
                                    and t >= max(self._ready_ns(pub), subscriber.registered_ns)
@@ -688,7 +723,7 @@ class Session:
                 counts[pub.ident] = len({key if key == ROBOT else key[0] for key in self._receivers(pub, t)})
         for sub in node.link.state.subscribers.values():
             if not sub.closed:
-                counts[sub.ident] = len(self._publishers_of(sub, t))
+                counts[sub.ident] = len(self._publishers_of(node, sub, t))
         changes = {ident: n for ident, n in counts.items() if node.told_connections.get(ident, 0) != n}
         node.told_connections.update(changes)
         return changes
@@ -818,13 +853,14 @@ class Session:
         if item.seq < 0:  # a scripted command: the base now has another command than any node's
             self._robot_command = None
         if item.to_nodes:
-            self._deliver(item.topic, item.type, item.data, queue)
+            self._deliver(item.topic, item.type, item.data, item.t_ns, queue)
 
-    def _deliver(self, topic: str, type_name: str, data: bytes, queue: bool = True) -> None:
-        """Queue a message the world publishes for every live subscriber of its topic and type (next batch)."""
+    def _deliver(self, topic: str, type_name: str, data: bytes, t: int, queue: bool = True) -> None:
+        """Queue a message the world publishes at t for every live subscriber of its topic and type that hears the
+        world (next batch)."""
         self.world_topics.add((topic, type_name))
         for node in self.nodes:
-            if not node.alive:
+            if not node.alive or not self._hears_world(node, t):
                 continue
             for sub in _listening(node, topic, type_name):
                 if queue:

@@ -44,7 +44,7 @@ def test_deeply_nested_json_is_a_channel_error_not_a_recursion_error():
 
 @pytest.mark.parametrize("kind, obj", [
     (ch.LOG, LOG), (ch.ADVERTISE, REGISTER), (ch.SUBSCRIBE, {**REGISTER, "queue_size": None}),
-    (ch.WAIT, {"wake_ns": None}), (ch.WAIT, {"wake_ns": 10}), (ch.UNREGISTER, {"id": 4}),
+    (ch.WAIT, {"wake_ns": None, "busy": False}), (ch.WAIT, {"wake_ns": 10, "busy": True}), (ch.UNREGISTER, {"id": 4}),
     (ch.INIT, {"name": "/n", "anonymous": False, "log_level": None, "disable_signals": True}),
     (ch.EXCEPTION, {"type": "ValueError", "message": "m", "where": "callback",
                     "frames": [{"file": "n.py", "line": None, "function": "f", "text": ""}]}),
@@ -85,14 +85,16 @@ def test_plain_batch_header_is_the_json_module_s_bytes(t_ns: int, clock_ns: int)
     assert ch.decode_batch(payload) == (header, [(1, b"ab")])
 
 
+@pytest.mark.parametrize("busy", [False, True])
 @pytest.mark.parametrize("wake", [None, 0, 10, 2**63])
-def test_wait_frames_read_back_as_written(wake) -> None:
-    payload = _payload(ch.encode_wait(wake))
-    assert json.loads(payload) == {"wake_ns": wake}
-    assert ch.plain_wait(payload) == (True, wake)
+def test_wait_frames_read_back_as_written(wake, busy: bool) -> None:
+    payload = _payload(ch.encode_wait(wake, busy))
+    assert json.loads(payload) == ({"wake_ns": wake, "busy": True} if busy else {"wake_ns": wake})
+    assert ch.plain_wait(payload) == (True, wake, busy)
 
 
 @pytest.mark.parametrize("payload", [b'{"wake_ns": 5}', b'{"wake_ns":-1}', b'{"wake_ns":05}', b'{"wake_ns":1.5}',
-                                     b'{"wake_ns":5,"x":1}', b'{"wake_ns":true}', b'{"wake_ns":5}\n'])
+                                     b'{"wake_ns":5,"x":1}', b'{"wake_ns":5,"busy":false}', b'{"wake_ns":true}',
+                                     b'{"wake_ns":5}\n'])
 def test_anything_else_in_a_wait_goes_to_the_schema(payload: bytes) -> None:
-    assert ch.plain_wait(payload) == (False, None)
+    assert ch.plain_wait(payload) == (False, None, False)

@@ -78,7 +78,7 @@ _TIME = struct.Struct("<Q")
 # headers are written and read without the json module (the same bytes json.dumps writes, so the contract is still
 # JSON); anything else goes through json.
 _PLAIN_BATCH = re.compile(rb'\{"t_ns":(0|[1-9][0-9]{0,18}),"clock_ns":(0|[1-9][0-9]{0,18})\}')
-_PLAIN_WAIT = re.compile(rb'\{"wake_ns":(?:null|(0|[1-9][0-9]{0,18}))\}')
+_PLAIN_WAIT = re.compile(rb'\{"wake_ns":(?:null|(0|[1-9][0-9]{0,18}))(,"busy":true)?\}')
 
 
 class ChannelError(Exception):
@@ -184,18 +184,20 @@ def decode_batch(payload: bytes) -> tuple[dict, list[tuple]]:
     return header, deliveries
 
 
-def encode_wait(wake_ns: int | None) -> bytes:
-    """A WAIT frame: ``{"wake_ns": n}`` (null: nothing to wake for but messages)."""
-    return encode(WAIT, b'{"wake_ns":null}' if wake_ns is None else b'{"wake_ns":%d}' % wake_ns)
+def encode_wait(wake_ns: int | None, busy: bool = False) -> bytes:
+    """A WAIT frame: ``{"wake_ns": n}`` (null: nothing to wake for but messages), with ``"busy": true`` when a thread
+    of the node is still runnable and only gives up the sim time its calls charged (a busy loop)."""
+    wake = b'{"wake_ns":null' if wake_ns is None else b'{"wake_ns":%d' % wake_ns
+    return encode(WAIT, wake + (b',"busy":true}' if busy else b'}'))
 
 
-def plain_wait(payload: bytes) -> tuple[bool, int | None]:
-    """(True, wake_ns) when a WAIT payload is exactly what encode_wait writes; (False, None) for anything else,
-    which the grader then checks against the WAIT schema (and words the violation)."""
+def plain_wait(payload: bytes) -> tuple[bool, int | None, bool]:
+    """(True, wake_ns, busy) when a WAIT payload is exactly what encode_wait writes; (False, None, False) for anything
+    else, which the grader then checks against the WAIT schema (and words the violation)."""
     match = _PLAIN_WAIT.fullmatch(payload)
     if match is None:
-        return False, None
-    return True, None if match.group(1) is None else int(match.group(1))
+        return False, None, False
+    return True, None if match.group(1) is None else int(match.group(1)), match.group(2) is not None
 
 
 def encode_header_bytes(kind: int, header: dict, data: bytes) -> bytes:

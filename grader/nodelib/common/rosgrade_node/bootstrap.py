@@ -48,6 +48,7 @@ def start(channel: str) -> None:
     except TypeError as exc:
         raise BootstrapError(f"START params cannot make a parameter tree: {exc}") from None
     runtime.wall_epoch_ns = round(wall_epoch * 1e9)
+    runtime.start_ns = t_ns
     runtime.ros_namespace = str(start_msg.get("ros_namespace") or "")
     runtime.world_topics = [tuple(pair) for pair in start_msg.get("world_topics") or ()
                             if isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, str) for x in pair)]

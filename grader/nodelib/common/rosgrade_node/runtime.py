@@ -13,6 +13,7 @@ params: dict = {}
 param_tree: dict = {}
 ros_namespace: str = ""
 wall_epoch_ns: int = 0
+start_ns: int = 0  # world time when the process started (START's t_ns)
 world_topics: list = []  # [topic, type] pairs the world publishes (for rospy.get_published_topics)
 
 

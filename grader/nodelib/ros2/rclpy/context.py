@@ -5,7 +5,11 @@ import sys
 import weakref
 from inspect import ismethod
 
-from . import arguments
+from . import _runtime, arguments
+
+# Python's start, the imports and rcl_init: the first rclpy.init returns this long after the process started (real
+# rclpy: about 0.35 s; DEVELOPERS.md, start-up). The DDS discovery that follows is the grader's (session.DISCOVERY_NS).
+STARTUP_NS = 350_000_000
 
 # Initialized contexts not yet shut down, in init order (rclpy's signal handler shuts all of them down).
 _live: list[Context] = []
@@ -35,6 +39,9 @@ class Context:
             raise RuntimeError("Context.init() must only be called once")
         self.ros_args = arguments.parse(list(args if args is not None else sys.argv))
         self._domain_id = domain_id or 0
+        starting_ns = _runtime.runtime.start_ns + STARTUP_NS - _runtime.world_ns()
+        if _runtime.runtime.scheduler is not None and starting_ns > 0:
+            _runtime.runtime.scheduler.sleep_ns(starting_ns)
         self._initialized = self._ok = True
         _live.append(self)
 
