@@ -11,13 +11,14 @@ from typing import Any
 
 from . import _cdr
 from ._cdr import HEADER, DecodeError
-from ._classes import message_class, service_class
+from ._classes import action_class, message_class, service_class
 from ._convert import FieldConversionError
 from ._defs import SERVICES
+from ._extra import ACTIONS
 from ._model import UnknownType, spec
 
-__all__ = ["DecodeError", "FieldConversionError", "UnknownType", "deserialize", "message_class", "serialize",
-           "service_class", "type_hash", "type_name"]
+__all__ = ["DecodeError", "FieldConversionError", "UnknownType", "action_class", "deserialize", "message_class",
+           "serialize", "service_class", "type_hash", "type_name"]
 
 _encoders: dict[type, Any] = {}
 _decoders: dict[type, Any] = {}
@@ -35,6 +36,8 @@ def type_name(msg_or_cls: Any) -> str:
 def type_hash(msg_or_cls: Any) -> str:
     """The type's Jazzy RIHS01 hash, 'RIHS01_<64 hex>'."""
     name = type_name(msg_or_cls)
+    if name in ACTIONS:
+        return ACTIONS[name]
     return SERVICES[name] if name in SERVICES else spec(name).hash
 
 

@@ -18,6 +18,7 @@ from typing import Any, Callable
 from . import definition
 from ._model import ARRAY, NUMERIC_CONTAINERS, SCALAR, SEQUENCE, Field, TypeSpec, UnknownType, snake_case, spec
 from ._defs import SERVICES
+from ._extra import ACTIONS
 
 # rosidl reads it once per generated module at import; here once per process.
 CHECK_FIELDS = os.environ.get("ROS_PYTHON_CHECK_FIELDS", "") == "1"
@@ -52,8 +53,8 @@ class TypeSupport:
 def _module_name(type_name: str) -> str:
     """rosidl's module of an interface: geometry_msgs/msg/TwistStamped -> geometry_msgs.msg._twist_stamped."""
     package, namespace, name = type_name.split("/")
-    if namespace == "srv":
-        name = name.rsplit("_", 1)[0]
+    if namespace in ("srv", "action"):  # a service's or action's parts live in its own module
+        name = name.split("_", 1)[0]
     return f"{package}.{namespace}._{snake_case(name)}"
 
 
@@ -432,4 +433,45 @@ def service_class(type_name: str) -> type:
         if type_name not in SERVICES:
             raise UnknownType(f"unknown service type {type_name!r}")
         cls = _classes[type_name] = _build_service(type_name)
+    return cls
+
+
+def _build_action(type_name: str) -> type:
+    name = _short(type_name)
+    module = _module_name(type_name + "_Goal")
+    meta = type(f"Metaclass_{name}", (type,), {
+        "__doc__": f"Metaclass of action '{name}'.",
+        "_TYPE_SUPPORT": None,
+        "__import_type_support__": _import_type_support(type_name),
+        "_rosgrade_type": type_name,
+    })
+    meta.__module__ = module
+    impl = type("Impl", (), {
+        "__module__": module, "__qualname__": f"{name}.Impl",
+        "SendGoalService": service_class(type_name + "_SendGoal"),
+        "GetResultService": service_class(type_name + "_GetResult"),
+        "FeedbackMessage": message_class(type_name + "_FeedbackMessage"),
+    })
+
+    def __init__(self: Any) -> None:
+        raise NotImplementedError("Action classes can not be instantiated")
+    return meta(name, (), {
+        "__module__": module,
+        "__qualname__": name,
+        "Goal": message_class(type_name + "_Goal"),
+        "Result": message_class(type_name + "_Result"),
+        "Feedback": message_class(type_name + "_Feedback"),
+        "Impl": impl,
+        "__init__": __init__,
+    })
+
+
+def action_class(type_name: str) -> type:
+    """The class of ``pkg/action/Name`` with its Goal, Result and Feedback classes and, in ``Impl``, the services
+    and feedback message rcl_action carries them in."""
+    cls = _classes.get(type_name)
+    if cls is None:
+        if type_name not in ACTIONS:
+            raise UnknownType(f"unknown action type {type_name!r}")
+        cls = _classes[type_name] = _build_action(type_name)
     return cls

@@ -1,19 +1,23 @@
-"""The lazy body of a message package's ``msg``/``srv`` module: classes are built on first attribute access."""
+"""The lazy body of a package's ``msg``/``srv``/``action`` module: classes are built on first attribute access."""
 from __future__ import annotations
 
 from typing import Any, Callable
 
-from ._classes import message_class, service_class
+from ._classes import action_class, message_class, service_class
 from ._defs import MESSAGES, SERVICES
+from ._extra import ACTIONS
 
 
 def lazy_module(module_name: str) -> tuple[Callable[[str], Any], Callable[[], list[str]], list[str]]:
-    """``(__getattr__, __dir__, __all__)`` for the module ``pkg.msg`` or ``pkg.srv``."""
+    """``(__getattr__, __dir__, __all__)`` for the module ``pkg.msg``, ``pkg.srv`` or ``pkg.action``."""
     package, namespace = module_name.split(".")
     prefix = f"{package}/{namespace}/"
     if namespace == "srv":
         names = sorted(n[len(prefix):] for n in SERVICES if n.startswith(prefix))
         build = service_class
+    elif namespace == "action":
+        names = sorted(n[len(prefix):] for n in ACTIONS if n.startswith(prefix))
+        build = action_class
     else:
         names = sorted(n[len(prefix):] for n in MESSAGES if n.startswith(prefix))
         build = message_class
