@@ -466,6 +466,20 @@ CASES += [
         "threads ['/odom']",
         "queue_size 3: the second read's messages are consecutive True",
     ), stderr_empty=True),
+    Case("p34_services", "p34_services.py", duration=4.0, stdout=(
+        "call before the server !! service [/p34_switch] unavailable",
+        "wait_for_service before the server !! timeout exceeded while waiting for service /p34_switch t=0.600",
+        "wait_for_service once served returned t=0.600",
+        "handler in the main thread False",
+        "response True on within one tick True",
+        "handler in the main thread False",
+        "handler refused !! service [/p34_switch] responded with an error: b'service cannot process request: no "
+        "thanks'",
+        "handler in the main thread False",
+        "call in a timer callback returned ['on']",
+        "call after shutdown !! service [/p34_switch] unavailable",
+        "end",
+    ), stderr_empty=True),
 ]
 
 CASES_BY_ID = {case.id: case for case in CASES}

@@ -210,4 +210,31 @@ CASES = [
         "before Ctrl+C: commands arrived",
         "markers arrived (linear.y) [4.0, 5.0]",
     )),
+    # Services between nodes: wall latency is real ROS 2's own (volatile); in sim time the answer comes within a tick.
+    Case("p11_service_between_nodes", "p11_service_between_nodes.py", stdout=(
+        "ready before the server exists False",
+        "wait_for_service -> True",
+        "response True set True",
+        "answered within one clock tick True",
+        "response False set False",
+        "answered within one clock tick True",
+        "end",
+    ), stderr_empty=True, volatile=(r"^latency wall ms ",)),
+    Case("p12_service_not_up_yet", "p12_service_not_up_yet.py", stdout=(
+        "early call done with no server False",
+        "wait_for_service -> True",
+        "early call done once the server is up False",
+        "later call done True success True",
+        "end",
+    ), stderr_empty=True),
+    Case("p13_call_in_callback_single", "p13_call_in_callback.py", args=("single", *SIM_TIME), stdout=(
+        "wait_for_service -> True",
+        "call raised TimeoutError",
+        "end",
+    ), stderr_empty=True),
+    Case("p13_call_in_callback_reentrant", "p13_call_in_callback.py", args=("reentrant", *SIM_TIME), stdout=(
+        "wait_for_service -> True",
+        "call returned success True",
+        "end",
+    ), stderr_empty=True),
 ]

@@ -143,7 +143,8 @@ class Executor:
             if not clock_is_work:
                 source.apply_clock()
             work += [(t, "timer", node) for t in node._timers if self.can_execute(t) and t.is_ready()]
-            if clock_is_work and source.clock_pending():
+            # a MultiThreadedExecutor's queued /clock job, not yet run by a worker, is not work again
+            if clock_is_work and source.clock_pending() and self.can_execute(source):
                 work.append((source, "clock", node))
             work += [(s, "sub", node) for s in node._subscriptions if s.has_message() and self.can_execute(s)]
             work += [(g, "guard", node) for g in node._guards if g._triggered and self.can_execute(g)]
