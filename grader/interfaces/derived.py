@@ -71,6 +71,26 @@ def action_types(action: str, goal: TypeDef, result: TypeDef, feedback: TypeDef)
     return types
 
 
+def _uint8_char(desc: tuple) -> tuple:
+    node, detail = desc
+    if node in (Nodetype.ARRAY, Nodetype.SEQUENCE):
+        return (node, (_uint8_char(detail[0]), detail[1]))
+    if node == Nodetype.BASE and detail[0] == "char":
+        return (node, ("uint8", detail[1]))
+    return desc
+
+
+def rihs01_hasher(store: Typestore) -> Typestore:
+    """A view of ``store`` whose ``hash_rihs01`` gives rosidl's hashes: rosidl_adapter turns a .msg ``char`` into
+    IDL ``uint8`` before the type description is hashed, where rosbags hashes it as a char (so rosbags' hash of
+    std_msgs/msg/Char and of service_msgs/msg/ServiceEventInfo, which every service's hash covers, differ from a
+    ROS 2 install's). ``hash_rihs01`` reads nothing but ``fielddefs``."""
+    view = Typestore.__new__(Typestore)
+    view.fielddefs = {name: (consts, [(fname, _uint8_char(desc)) for fname, desc in fields])
+                      for name, (consts, fields) in store.fielddefs.items()}
+    return view
+
+
 def ros1_md5_text(store: Typestore, type_name: str) -> str:
     """genmsg's md5 text of a type in ``store``: constants, then fields with nested types replaced by their md5."""
     consts, fields = store.fielddefs[type_name]

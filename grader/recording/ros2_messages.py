@@ -75,15 +75,16 @@ class Ros2Catalog:
     message_encoding = "cdr"
     log_levels = frozenset({10, 20, 30, 40, 50})  # rcl_interfaces/msg/Log severities
 
-    def __init__(self, extra: Mapping[str, tuple] | None = None, services: Iterable[str] = ()) -> None:
+    def __init__(self, extra: Mapping[str, tuple] | None = None, services: Iterable[str] = (),
+                 hashes: Mapping[str, str] | None = None) -> None:
         """The built-in types, plus ``extra`` rosbags definitions (a submission's own, with the types rosidl
-        derives from its services and actions) and the service types among them."""
+        derives from its services and actions), the service types among them and their RIHS01 hashes."""
         self._store = _catalog_typestore()
         if extra:
             self._store.register(dict(extra))
         self._services = frozenset(SERVICES) | frozenset(services)
         self._msgdefs: dict[str, str] = {}
-        self._hashes: dict[str, str] = {}
+        self._hashes: dict[str, str] = dict(hashes or {})
 
     @staticmethod
     def canonical(type_name: str) -> str:
@@ -160,8 +161,8 @@ class Ros2Catalog:
         name = _service_name(service_name)
         if name not in self._services:
             raise RecordingError(f"unknown service type {service_name!r}")
-        if name in NODE_SERVICE_HASHES:
-            return NODE_SERVICE_HASHES[name]
+        if name in NODE_SERVICE_HASHES or name in self._hashes:
+            return NODE_SERVICE_HASHES.get(name) or self._hashes[name]
         return self._store.hash_rihs01(name if name in self._store.fielddefs else f"{name}_Request")
 
 
