@@ -19,7 +19,7 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from conformance_compare import diff_commands, diff_streams, missing_lines, normalise, reference_time  # noqa: E402
-from probe_cases import CASES, Case  # noqa: E402
+from probe_cases import CASES, CASES_BY_ID, Case  # noqa: E402
 from real_ros import NOT_INSTALLED, RealRos, RealRosError, real_ros_available  # noqa: E402
 from rosgrade_side import run_ours  # noqa: E402
 
@@ -179,3 +179,13 @@ def test_p03_last_command_is_zero_ours(our_outputs: _OursCache) -> None:
     assert result.commands, "no /cmd_vel received"
     last = result.commands[-1]
     assert last.linear == (0.0, 0.0, 0.0) and last.angular == (0.0, 0.0, 0.0), last
+
+
+@pytest.mark.parametrize("mode, connect_s", [("busy", 0.1), ("sleep", 0.05)])
+def test_p33_busy_connect_ours(our_outputs: _OursCache, mode: str, connect_s: float) -> None:
+    """A publisher connects 0.1 s after it registered while the node busy-loops then, 50 ms while it sleeps
+    (session.BUSY_CONNECT_DELAY_NS, CONNECT_DELAY_NS); the command published once connected reaches the robot then."""
+    result = our_outputs.get(CASES_BY_ID[f"p33_busy_connect_{mode}"])
+    ref = reference_time(result.stdout)
+    assert f"{mode} wait for the robot ended t={connect_s:.3f}" in result.stdout.splitlines()
+    assert [(round(c.t - ref, 2), c.linear) for c in result.commands] == [(connect_s, (0.2, 0.0, 0.0))]
