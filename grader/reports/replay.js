@@ -80,6 +80,19 @@
       this.lineItems.push(more);
       this.lineTimes.push(lines.length ? lines[lines.length - 1][0] : span[0]);
     }
+    var legend = document.createElement("p"), d = this.data, parts = [];
+    legend.className = "rp-legend";
+    if (d.pen) {
+      parts.push("the turtles' pen lines as drawn so far");
+    } else {
+      parts.push("blue: where the robot went");
+      if (d.events.some(function (e) { return e[1] === "ctrl_c"; })) { parts.push("orange: after Ctrl+C"); }
+      if ((d.world.obstacles || []).length) { parts.push("grey: walls and pillars"); }
+    }
+    if (d.ideal) { parts.push("dashed green: " + d.ideal.label); }
+    if (d.goal) { parts.push("red cross: the goal"); }
+    legend.textContent = parts.join("; ") + ".";
+    this.canvas.insertAdjacentElement("afterend", legend);
     var width = span[1] - span[0] || 1;
     this.eventItems = this.data.events.map(function (ev) {
       var item = document.createElement("li"), button = document.createElement("button");
@@ -188,14 +201,16 @@
     g.setTransform(ratio * scale, 0, 0, -ratio * scale, -ratio * scale * b[0], ratio * scale * b[3]);
     var px = 1 / scale;  // one CSS pixel in metres
     this.drawGround(g, px);
-    if (d.ideal) { this.polyline(g, d.ideal.x, d.ideal.y, null, "#1b8a3a", 1.5 * px, [6 * px, 4 * px]); }
+    if (d.ideal) { this.polyline(g, d.ideal.x, d.ideal.y, "#1b8a3a", 1.5 * px, [6 * px, 4 * px]); }
     if (d.goal) { this.drawGoal(g, d.goal, px); }
     if (d.pen) { this.drawPen(g, t, px); }
     var poses = [];
+    var ctrlC = d.events.filter(function (e) { return e[1] === "ctrl_c"; }).map(function (e) { return e[0]; })[0];
     this.bodies.forEach(function (body) {
-      if (!d.pen) {
-        var n = lastAtOrBefore(body.t, t) + 1;
-        this.polyline(g, body.x.slice(0, n), body.y.slice(0, n), null, "#1f5fbf", 2 * px, []);
+      if (!d.pen) {  // the path so far; after Ctrl+C in orange, as in the path plot
+        var n = lastAtOrBefore(body.t, t) + 1, cut = ctrlC === undefined ? n : Math.min(n, lastAtOrBefore(body.t, ctrlC) + 1);
+        this.polyline(g, body.x.slice(0, cut), body.y.slice(0, cut), "#1f5fbf", 2 * px, []);
+        this.polyline(g, body.x.slice(Math.max(cut - 1, 0), n), body.y.slice(Math.max(cut - 1, 0), n), "#e07b00", 2 * px, []);
       }
       var pose = this.poseAt(body, t);
       if (pose && t <= body.t[body.t.length - 1] + 0.5) {
@@ -262,7 +277,7 @@
     });
   };
 
-  Replay.prototype.polyline = function (g, xs, ys, fill, stroke, width, dash) {
+  Replay.prototype.polyline = function (g, xs, ys, stroke, width, dash) {
     if (xs.length < 2) { return; }
     g.beginPath();
     g.moveTo(xs[0], ys[0]);
