@@ -168,3 +168,14 @@ def test_reference_behaviour(case: Case, side: str, request: pytest.FixtureReque
         if not problems:
             return
     pytest.fail(f"{case.id} ({side}):\n" + "\n".join(problems) + "\n\n" + _describe(side, result))
+
+
+def test_p20_startup_ours(our_outputs: _OursCache) -> None:
+    """rclpy.init returns 0.35 s after the process started and discovery takes 0.1 s more (rclpy.context.STARTUP_NS,
+    session.DISCOVERY_NS): the first /clock, and so the first tick, comes 0.45 s after the start, and its message
+    reaches the robot then."""
+    from rosgrade_side2 import START_TIME_S
+
+    result = our_outputs.get(next(c for c in CASES if c.id == "p20_startup"))
+    assert result.origin_s == pytest.approx(START_TIME_S + 0.45, abs=1e-9)
+    assert [(round(c.t, 3), c.linear[1]) for c in result.commands[:2]] == [(0.0, 1.0), (0.05, 2.0)]
