@@ -11,6 +11,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from grader import timing
+from grader.interfaces import run_interfaces
 from grader.launch import LaunchError, find_packages, read_launch, turtlesim
 from grader.launch.specs import node_specs
 from grader.recording import Recording, RecordingError
@@ -181,8 +182,10 @@ def _plan_task(folder: Path, rubric: Rubric, out_dir: Path) -> _TaskPlan | TaskR
     if task_dir.exists():
         shutil.rmtree(task_dir)
     task_dir.mkdir(parents=True)
+    interfaces = run_interfaces(read_workspace(folder), nodes[0].flavour) if nodes and folder.is_dir() else None
+    findings = findings + (interfaces.findings if interfaces else [])
     runs = [Run(RunSpec(scenario=scenario, nodes=_typed(nodes, scenario.stdin), limits=rubric.limits,
-                        name=scenario.name),
+                        name=scenario.name, interfaces=interfaces),
                 task_dir / f"{scenario.name}.mcap", task_dir / f"{scenario.name}.log") for scenario in rubric.scenarios]
     return _TaskPlan(rubric, nodes, findings, runs)
 

@@ -9,5 +9,8 @@ __all__ = ["CatalogError", "InterfaceSet", "catalog_for", "node_payload", "read_
 
 
 def run_interfaces(workspace: Workspace, flavour: str) -> InterfaceSet:
-    """The interfaces a run of ``flavour`` ("ros1" or "ros2") gets from the workspace's packages, with findings."""
-    return read_interfaces(workspace.packages(), flavour, builtin_types(flavour))
+    """The interfaces a run of ``flavour`` ("ros1" or "ros2") gets from the workspace's packages, with findings and
+    the payload its nodes are given."""
+    interfaces = read_interfaces(workspace.packages(), flavour, builtin_types(flavour))
+    interfaces.payload = node_payload(interfaces)
+    return interfaces

@@ -46,6 +46,7 @@ class InterfaceSet:
     actions: dict[str, tuple[str, ...]] = field(default_factory=dict)   # action type -> Goal, Result, Feedback
     defaults: dict[str, dict[str, object]] = field(default_factory=dict)  # type -> field -> .msg default value
     findings: list[str] = field(default_factory=list)
+    payload: dict | None = None  # what a node is given at START (grader.interfaces.node_payload)
 
     def __bool__(self) -> bool:
         return bool(self.types)

@@ -163,7 +163,7 @@ class Session:
         self.recording_path = recording
         self.log_path = log
         # One wire flavour per run: the client library of its nodes (rospy: ROS 1, rclpy: ROS 2).
-        self.wire = wire_for(spec.flavour)
+        self.wire = wire_for(spec.flavour, spec.interfaces)
         self._discovery_ns = DISCOVERY_NS if self.wire.name == "ros2" else 0
         self.catalog = self.wire.catalog
         # The velocity command types the robot's base takes (the scenario's choice, else the flavour's robot).
@@ -270,7 +270,8 @@ class Session:
         try:
             link.handshake({"t_ns": t, "params": self._start_params(node_spec),
                             "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t),
-                            "world_topics": sorted([topic, type_name] for topic, type_name in self.world_topics)})
+                            "world_topics": sorted([topic, type_name] for topic, type_name in self.world_topics),
+                            "interfaces": self.spec.interfaces.payload if self.spec.interfaces else None})
         except (NodeExited, NodeSilent, NodeOverLimit, ProtocolViolation) as exc:
             self._node_failed(node, exc, t)
             return

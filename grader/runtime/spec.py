@@ -6,6 +6,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Literal
 
 if TYPE_CHECKING:
+    from grader.interfaces import InterfaceSet
     from grader.runtime.client_library import EntryPoint
     from sim import Scenario
 
@@ -71,6 +72,8 @@ class RunSpec:
     name: str = "nominal"
     # Sim seconds a node gets after Ctrl+C before SIGTERM, then before SIGKILL.
     shutdown_grace_s: float = 5.0
+    # The submission's own .msg/.srv/.action types: the run's catalog and what its nodes import (None: none).
+    interfaces: InterfaceSet | None = None
 
     @property
     def flavour(self) -> str:

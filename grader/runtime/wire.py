@@ -11,6 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 
+from grader.interfaces import InterfaceSet, catalog_for
 from grader.recording import serialize as ros1
 from grader.recording import serialize_cdr as cdr
 from grader.recording.messages import MessageCatalog, default_catalog
@@ -129,9 +130,17 @@ def _log_cdr(t_ns: int, seq: int, level: int, name: str, msg: str, file: str, fu
     return cdr.log_cdr(t_ns, level, name, msg, file, function, line)
 
 
+def wire_for(flavour: str, interfaces: InterfaceSet | None = None) -> Wire:
+    """The wire of a client library flavour ("ros1": rospy, "ros2": rclpy), with the submission's own types in its
+    catalog when it has some."""
+    base = _base_wire(flavour)
+    if not interfaces:
+        return base
+    return dataclasses.replace(base, catalog=catalog_for(flavour, interfaces))
+
+
 @lru_cache(maxsize=None)
-def wire_for(flavour: str) -> Wire:
-    """The wire of a client library flavour ("ros1": rospy, "ros2": rclpy)."""
+def _base_wire(flavour: str) -> Wire:
     if flavour == "ros1":
         return _ros1_wire()
     if flavour == "ros2":

@@ -54,6 +54,9 @@ def start(channel: str) -> None:
                             if isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, str) for x in pair)]
     if runtime.ros_namespace:
         os.environ["ROS_NAMESPACE"] = runtime.ros_namespace
+    if start_msg.get("interfaces"):  # the submission's own .msg/.srv/.action types, before its imports run
+        import rosgrade_interfaces  # noqa: PLC0415 - the client library's own (its root is first on the path)
+        rosgrade_interfaces.install(start_msg["interfaces"])
 
     sys.stdout = streams.make_stream(link, 1, 1, "strict")
     sys.stderr = streams.make_stream(link, 2, 2, "backslashreplace")
