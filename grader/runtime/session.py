@@ -476,6 +476,8 @@ class Session:
         holds = self.world.command_holds_until_ns()
         inert = self._inert_publishers(node, t, holds)
         bounds = [self.end_ns, *self._latched_connect_times(t)]
+        if (call_ns := self.caller.next_ns()) is not None:  # the scenario's next service call
+            bounds.append(max(call_ns, t + 1))
         if self.shutdown_ns is not None and not self.shutdown_sent:
             bounds.append(self.shutdown_ns)
         bounds += [ready for pub in node.link.state.publishers.values()

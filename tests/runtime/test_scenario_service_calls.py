@@ -28,9 +28,9 @@ def test_calls_wait_for_a_service_offered_late_then_follow_one_another(tmp_path)
     run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=NODES / "late_server.py", flavour="ros2"),)),
         tmp_path / "late.mcap", tmp_path / "late.log")
     calls = service_calls(Recording.open(tmp_path / "late.mcap"))
-    # the server offers /add_two_ints after its 1 s sleep (at 3.0 s): the first two calls go out then, in order
+    # the server offers /add_two_ints after rclpy.init (0.35 s) and its 1 s sleep: the first two calls go out then
     assert [(round(c.t, 3), c.request["a"], c.response) for c in calls] == [
-        (3.0, 0, {"sum": 10}), (3.0, 1, {"sum": 11}), (4.5, 2, {"sum": 12})]
+        (3.35, 0, {"sum": 10}), (3.35, 1, {"sum": 11}), (4.5, 2, {"sum": 12})]
 
 
 def test_a_call_to_a_service_never_offered_is_never_made(tmp_path) -> None:
@@ -52,3 +52,11 @@ def test_the_worlds_services_are_called_through_the_same_routing(tmp_path) -> No
     assert ("/rosgrade/service/spawn/request", "/rosgrade", "grader") in topics
     assert ("/rosgrade/service/spawn/response", "/turtlesim", "world") in topics
     assert any(topic == "/leo/pose" for topic, _, _ in topics)
+
+
+def test_a_call_goes_out_at_its_time_while_the_world_runs_ahead_of_a_busy_server(tmp_path) -> None:
+    scenario = Scenario(duration=2.0, service_calls=_calls(0.555, 1.234))
+    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=NODES / "busy_server.py", flavour="ros2"),)),
+        tmp_path / "busy.mcap", tmp_path / "busy.log")
+    calls = service_calls(Recording.open(tmp_path / "busy.mcap"))
+    assert [(round(c.t, 6), c.response) for c in calls] == [(2.555, {"sum": 10}), (3.234, {"sum": 11})]

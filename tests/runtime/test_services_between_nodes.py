@@ -43,10 +43,11 @@ def rclpy_pair(tmp):
 def test_an_rclpy_client_waits_for_the_service_then_gets_each_sum_at_the_time_it_called(rclpy_pair) -> None:
     result, _, printed = rclpy_pair
     assert result.nodes[0].status == "exited", result.nodes[0].message
-    # wait_for_service looks every 0.25 s; the server took its requests in the same step the call was made
-    assert printed == [(2.0, "ready before: False"), (2.25, "ready at 0"), (2.25, "serve 2+3 at 2250000000"),
-                       (2.25, "sum 5 sent 0 got 2250000000"), (2.25, "serve 40+2 at 2250000000"),
-                       (2.25, "sum 42 sent 2250000000 got 2250000000")]
+    # both start 0.35 s in (rclpy.init); wait_for_service looks every 0.25 s; the server takes each request at the
+    # time it was sent, and the response comes back then
+    assert printed == [(2.35, "ready before: False"), (2.6, "ready at 0"), (2.6, "serve 2+3 at 2600000000"),
+                       (2.6, "sum 5 sent 0 got 2600000000"), (2.6, "serve 40+2 at 2600000000"),
+                       (2.6, "sum 42 sent 2600000000 got 2600000000")]
 
 
 def test_requests_and_responses_are_recorded_under_the_caller_and_the_server(rclpy_pair) -> None:
@@ -69,8 +70,8 @@ def test_call_in_a_timer_returns_only_with_a_reentrant_group_and_a_multithreaded
                                                                                           returns: bool) -> None:
     _, recording, printed = _run(tmp, group, _ros2("call_in_timer.py", group), _ros2("add_server.py"))
     # the server answers either way: the single-threaded caller never takes the response (the classic deadlock)
-    assert printed[:2] == [(2.01, "calling"), (2.01, "serve 1+2 at 2010000000")]
-    assert ((2.01, "returned 3") in printed) == returns
+    assert printed[:2] == [(2.45, "calling"), (2.45, "serve 1+2 at 2450000000")]
+    assert ((2.45, "returned 3") in printed) == returns
     assert [c.response for c in service_calls(recording)] == [{"sum": 3}]
 
 
