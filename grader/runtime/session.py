@@ -45,7 +45,7 @@ CONNECT_DELAY_NS = 50_000_000
 BUSY_CONNECT_DELAY_NS = 100_000_000
 # ROS 2: a node's DDS participant (made with its first node) discovers the world's and is discovered this long
 # after: its endpoints made before match then, and /clock and the world's topics reach it from then on. Real rclpy
-# (Fast DDS) is bimodal, 0.001-0.23 s or about 3 s (a missed announcement); this is the fast mode. DEVELOPERS.md.
+# (Fast DDS) is bimodal, 0.001-0.45 s or about 3 s (a missed announcement); this is the fast mode. DEVELOPERS.md.
 DISCOVERY_NS = 100_000_000
 # The robot's base as a receiver of latched messages (node subscribers are (node index, handle) pairs).
 ROBOT = "robot"
