@@ -104,8 +104,9 @@ def _task_html(task: TaskReport, plots: Sequence[Plot], replays: Sequence[Replay
 def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Sequence[str] = (),
                 replays: Sequence[Replay] = ()) -> str:
     """The whole report as one HTML page, with a replay of each run (its script and style inline: no network)."""
-    worst = watch_first(report) if replays else None
+    worst = watch_first(report)
     first = None if worst is None else (worst[0].id, worst[1])
+    watched = next((r for r in replays if (r.task, r.scenario) == first), None)
     title = f"rosgrade report: {report.submission}"
     parts = [
         "<!DOCTYPE html>",
@@ -126,10 +127,9 @@ def render_html(report: SubmissionReport, plots: Sequence[Plot] = (), notes: Seq
         for t in report.tasks
     ]
     parts.append("</table>")
-    if first is not None:
-        parts.append(f'<p>Watch first: <a href="#{next(r.anchor for r in replays if (r.task, r.scenario) == first)}">'
-                     f"the replay of {escape(first[0])}, scenario '{escape(first[1])}'</a>.</p>"
-                     if any((r.task, r.scenario) == first for r in replays) else "")
+    if watched is not None:
+        parts.append(f'<p>Watch first: <a href="#{watched.anchor}">the replay of {escape(watched.task)}, scenario '
+                     f"'{escape(watched.scenario)}'</a>.</p>")
     for task in report.tasks:
         parts += _task_html(task, plots, replays, first)
     if notes:

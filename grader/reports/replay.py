@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+# The turtlesim picture's replay, step by step: the strokes are the picture's, only kept with their times.
 from grader.metrics.pen import _events, _move, _Params, _serve
 from grader.metrics.run import TURTLE_POSE_TOPIC, ParamChange, RunData, RunInfo, Trajectory
 from grader.metrics.wall_hits import WARNING as WALL_WARNING
@@ -24,10 +25,10 @@ from sim.scenario import TURTLESIM
 from sim.turtle_canvas import METER_PX, Canvas
 from sim.turtlesim import CANVAS_M, DEFAULT_BACKGROUND, DEFAULT_TURTLE, Turtle, background
 
-MAX_BYTES = 250_000  # one run's data at most (the limit is 300 KB with the page around it)
+MAX_BYTES = 250_000  # one run's data at most: with its share of the page, a run stays under 300 KB
 COARSER = (1, 2, 4, 8, 16, 32, 64)  # how much coarser than a pixel the data may get to fit in MAX_BYTES
-VIEW_PX = 480
-STRAIGHT_SPAN = 100  # pen points looked back at when leaving out straight stretches  # the replay's width on a wide screen: decimation keeps what differs by a pixel there
+VIEW_PX = 480  # the replay's width on a wide screen: thinning keeps what differs by a pixel there
+STRAIGHT_SPAN = 100  # points looked back at when leaving out straight stretches (bounds the work per point)
 MAX_LINES = 300  # output lines kept per run (the first ones: a loop printing forever repeats itself)
 MAX_TEXT = 160  # characters kept of one line
 COMMAND_BIN_S = 0.1  # commands shown at most this often
@@ -41,8 +42,8 @@ FOOTPRINTS = {
     "turtlebot2": (0.354, 0.354),
     "husky_a200": (0.990, 0.670),
 }
-VIEW_MARGIN_M = 0.5
-MIN_ASPECT = 0.6
+VIEW_MARGIN_M = 0.5  # around what the robot world shows
+MIN_ASPECT = 0.6  # its height to width at least (and width to height)
 TURTLE_M = 0.45  # the turtle image's size in the window
 MAX_HITS = 20  # wall hits marked on the timeline
 # Quantities that say when a criterion was decided, in seconds after the start: a metric that knows reports
