@@ -469,6 +469,7 @@ CASES += [
     Case("p34_services", "p34_services.py", duration=4.0, stdout=(
         "call before the server !! service [/p34_switch] unavailable",
         "wait_for_service before the server !! timeout exceeded while waiting for service /p34_switch t=0.600",
+        "a second Service of the name !! service [/p34_switch] already registered",
         "wait_for_service once served returned t=0.600",
         "handler in the main thread False",
         "response True on within one tick True",

@@ -31,6 +31,10 @@ def handle(request):
 
 
 server = rospy.Service("/p34_switch", SetBool, handle)
+try:
+    rospy.Service("/p34_switch", SetBool, handle)
+except rospy.ServiceException as e:
+    print("a second Service of the name !!", e)
 rospy.wait_for_service("/p34_switch", timeout=1.0)
 print("wait_for_service once served returned t=%.3f" % (rospy.get_time() - T0))
 sent = rospy.get_time()

@@ -23,6 +23,8 @@ from .msg import args_kwds_to_message
 
 # rospy's wait_for_service sleeps this long between two looks at the master.
 _PROBE_PERIOD_NS = 300_000_000
+# The node's services by resolved name (rospy's ServiceManager refuses a name twice).
+_services: dict[str, Service] = {}
 
 
 class ServiceException(Exception):
@@ -142,6 +144,9 @@ class Service:
 
     def __init__(self, name: str, service_class, handler, buff_size: int = 65536, error_handler=None) -> None:
         self.resolved_name = names.resolve_name(name)
+        if self.resolved_name in _services:
+            raise ServiceException("service [%s] already registered" % self.resolved_name)
+        _services[self.resolved_name] = self
         self.service_class = service_class
         self.request_class = service_class._request_class
         self.response_class = service_class._response_class
@@ -186,6 +191,7 @@ class Service:
         """Stop serving (UNREGISTER): later calls find no server."""
         if not self.done:
             self.done = True
+            _services.pop(self.resolved_name, None)
             runtime.scheduler.remove_sink(self._handle)
             runtime.link.send_json(ch.UNREGISTER, {"id": self._handle})
 
