@@ -785,9 +785,9 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point: run a subcommand and turn user-facing errors into one line and exit code 2."""
     parser = build_parser()
-    if not (sys.argv[1:] if argv is None else argv):  # no command: the first screen, not an argparse error
+    if not (sys.argv[1:] if argv is None else argv):  # no command: the first screen, not only an argparse error
         parser.print_help()
-        return EXIT_ERROR
+        parser.exit(EXIT_ERROR)
     args = parser.parse_args(argv)
     try:
         return int(args.handler(args))

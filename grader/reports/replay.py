@@ -198,13 +198,15 @@ def _strokes(canvas: _PenCanvas, start: float, tolerance_px: float) -> dict[str,
 
 def _goal(task: TaskReport, scenario: str) -> list[float] | None:
     """Where the rubric puts this scenario's goal (a metric with goal_x and goal_y), read from the task's rubric."""
+    if task.rubric is None:
+        return None
     from grader.rubric import RubricError, load_rubric
 
     try:
-        rubric = load_rubric(task.rubric.file) if task.rubric else None
+        rubric = load_rubric(task.rubric.file)
     except (RubricError, OSError):
         return None
-    for s in (s for s in (rubric.scenarios if rubric else ()) if s.name == scenario):
+    for s in (s for s in rubric.scenarios if s.name == scenario):
         for criterion in rubric.criteria:
             params = criterion.params_for(s)
             if hasattr(params, "goal_x") and hasattr(params, "goal_y"):

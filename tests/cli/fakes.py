@@ -169,8 +169,11 @@ def rubric_module() -> types.ModuleType:
             raise RubricError(f"{path}: the fake rubric module reads no files")
         return load_rubrics()
 
-    module.load_rubrics = load_rubrics
+    def load_rubric(path: Any) -> Any:
+        raise RubricError(f"{path}: the fake rubric module reads no files")
 
+    module.load_rubrics = load_rubrics
+    module.load_rubric = load_rubric
     module.task_table = task_table
     return module
 
