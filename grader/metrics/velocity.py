@@ -30,16 +30,17 @@ def measure(run: RunData, params: Params) -> Measurement:
     bad = over_linear | over_angular | ~finite | off_axis
     n = len(cmd)
     first_bad = float(cmd.t[np.argmax(bad)] - run.start_time) if np.any(bad) else math.nan
+    # No command at all is nothing to count, not "0 of 0 commands over the limits": NaN, as the fastest command.
     return {
         "n_messages": n,
-        "n_violations": int(np.sum(bad)),
+        "n_violations": int(np.sum(bad)) if n else math.nan,
         "violating_fraction": float(np.mean(bad)) if n else math.nan,
         "n_over_linear": int(np.sum(over_linear)),
         "n_over_angular": int(np.sum(over_angular)),
         "n_nonfinite": int(np.sum(~finite)),
         "n_off_axis": int(np.sum(off_axis)),
-        "max_linear": float(np.max(vx)) if n else 0.0,
-        "max_angular": float(np.max(wz)) if n else 0.0,
+        "max_linear": float(np.max(vx)) if n else math.nan,
+        "max_angular": float(np.max(wz)) if n else math.nan,
         "first_violation_s": first_bad,
         "limit_linear": params.max_linear,
         "limit_angular": params.max_angular,

@@ -7,6 +7,7 @@ import pytest
 from scoring_synth import run
 
 from grader.metrics import Commands, RunData, RunInfo
+from grader.reports.measured import describe
 from grader.rubric import load_rubrics
 from grader.scoring import score_task
 
@@ -34,6 +35,7 @@ def test_a_node_that_published_no_command_is_told_so(task: str) -> None:
     limits = _criterion(task, _still(task, Commands.empty()), "velocity_limits")
     assert limits.score == 0.0
     assert "published no velocity command" in limits.feedback and "0 of 0" not in limits.feedback
+    assert "0 of 0" not in describe(limits.measured)  # the report's Measured column
 
 
 @pytest.mark.parametrize("task", ["move_circle", "mover_timed_square"])

@@ -44,3 +44,4 @@ def test_components_a_differential_drive_cannot_use() -> None:
 def test_no_commands_means_no_fraction() -> None:
     m = measure(RunData(odometry=ODOM), LIMITS)
     assert m["n_messages"] == 0 and math.isnan(m["violating_fraction"])
+    assert all(math.isnan(m[q]) for q in ("n_violations", "max_linear", "max_angular"))  # nothing to count
