@@ -50,7 +50,7 @@ def catalog_for(flavour: str, interfaces: InterfaceSet | None) -> Ros2Catalog | 
         raise CatalogError(f"{interfaces.flavour} interfaces cannot serve a {flavour} run")
     if flavour == "ros2":
         types, services = _ros2_extra(interfaces)
-        hasher = rihs01_hasher(Ros2Catalog(types, services).typestore)
+        hasher = rihs01_hasher({**ros2_catalog().typestore.fielddefs, **types})
         return Ros2Catalog(types, services, {name: hasher.hash_rihs01(name) for name in types})
     catalog = MessageCatalog(interfaces.types)
     md5s = {_ros1_name(service): ros1_service_md5(catalog.typestore, request, response)
@@ -104,7 +104,7 @@ def _ros2_payload(interfaces: InterfaceSet) -> dict:
     types, services = _ros2_extra(interfaces)
     catalog = Ros2Catalog(types, services)
     store = catalog.typestore
-    hasher = rihs01_hasher(store)
+    hasher = rihs01_hasher(store.fielddefs)
     structs = set(services) | set(interfaces.actions)
     wanted = [name for name in types if name not in structs]
     messages = {name: ros2_entry(store, hasher, name, interfaces.defaults.get(name, {}))

@@ -82,7 +82,7 @@ def test_ros2_record_is_what_the_real_generators_give_now(tmp_path: Path) -> Non
 def test_built_in_hashes_as_rosidl_computes_them() -> None:
     """Every type the venv's wheels describe (share/<pkg>/<ns>/<Name>.json) that rosgrade's catalog has: rosidl's
     hash from the catalog's definitions, char read as uint8 as rosidl_adapter reads it."""
-    hasher = rihs01_hasher(ros2_catalog().typestore)
+    hasher = rihs01_hasher(ros2_catalog().typestore.fielddefs)
     compared, different = 0, []
     for path in sorted((VENV / "share").glob("*/*/*.json")):
         name = "/".join(path.with_suffix("").parts[-3:])
