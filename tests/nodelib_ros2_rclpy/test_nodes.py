@@ -51,10 +51,11 @@ def test_init_and_endpoints_are_announced_with_ros2_types(default_run):
 
 
 def test_timer_fires_overdue_once_at_first_clock_then_on_its_grid(default_run):
+    # The node starts at 1.403 s and rclpy.init returns 0.35 s later (rclpy.context.STARTUP_NS): first /clock 1.76.
     times = [t for t, _ in default_run.published("/cmd_vel")]
-    assert times[:4] == [1_410_000_000, 1_500_000_000, 1_600_000_000, 1_700_000_000]
+    assert times[:4] == [1_760_000_000, 1_800_000_000, 1_900_000_000, 2_000_000_000]
     stamps = [decode(TwistStamped, data).header.stamp for _, data in default_run.published("/cmd_vel")]
-    assert (stamps[0].sec, stamps[0].nanosec) == (1, 410_000_000)
+    assert (stamps[0].sec, stamps[0].nanosec) == (1, 760_000_000)
 
 
 def test_now_is_zero_before_the_first_spin(default_run):
@@ -86,7 +87,8 @@ def test_signal_handler_options_no_keeps_the_context_and_delivers_the_stop(no_ru
 
 def test_log_lines_are_rcutils_format_on_stderr_with_wall_stamp_and_log_frames(default_run):
     first = default_run.output(2).splitlines()[0]
-    assert first == "[INFO] [1700000001.403000000] [move_circle]: init now=Time(nanoseconds=0, clock_type=ROS_TIME)"
+    # logged right after rclpy.init, which returns 0.35 s after the start at 1.403 s (rclpy.context.STARTUP_NS)
+    assert first == "[INFO] [1700000001.753000000] [move_circle]: init now=Time(nanoseconds=0, clock_type=ROS_TIME)"
     log = default_run.of("LOG")[0].data
     assert (log["level"], log["name"], log["function"]) == (20, "move_circle", "__init__")
     assert log["file"].endswith("circle_node.py")
@@ -94,8 +96,8 @@ def test_log_lines_are_rcutils_format_on_stderr_with_wall_stamp_and_log_frames(d
 
 def test_throttle_uses_the_wall_clock_and_takes_the_next_tick_after_a_second(default_run):
     ticks = [line for line in default_run.output(2).splitlines() if "] [move_circle]: tick" in line]
-    assert ticks == ["[INFO] [1700000001.410000000] [move_circle]: tick 1",
-                     "[INFO] [1700000002.500000000] [move_circle]: tick 12"]
+    assert ticks == ["[INFO] [1700000001.760000000] [move_circle]: tick 1",
+                     "[INFO] [1700000002.800000000] [move_circle]: tick 12"]
 
 
 def test_uncaught_keyboard_interrupt_dies_by_sigint():
@@ -136,8 +138,8 @@ def test_api_behaviour(api_run, line):
 
 
 def test_spin_once_counts_each_clock_update_as_work(api_run):
-    # four spin_once: /clock 1.41, the overdue 0.5 s timer, /clock 1.42, /clock 1.43
-    assert "ticks [1410000000]" in api_run.lines()
+    # four spin_once: /clock 1.76 (the first after rclpy.init's 0.35 s), the overdue 0.5 s timer, /clock 1.77, 1.78
+    assert "ticks [1760000000]" in api_run.lines()
 
 
 def test_logging_filters_levels_and_deprecated_warn(api_run):
@@ -156,8 +158,9 @@ def test_transient_local_publisher_registers_latched(api_run):
 
 
 def test_blocking_callback_starves_subscriptions_and_the_clock():
-    run = Ros2Grader("starve_probe.py", args=list(SIM), end_ns=3_000_000_000, shutdown_ns=2_500_000_000,
-                     messages=[(1_600_000_000 + i * 50_000_000, "/odom", _odom(0.0)) for i in range(10)]).run()
+    # 0.35 s later than the node's start would have it without rclpy.init's start-up (rclpy.context.STARTUP_NS)
+    run = Ros2Grader("starve_probe.py", args=list(SIM), end_ns=3_350_000_000, shutdown_ns=2_850_000_000,
+                     messages=[(1_950_000_000 + i * 50_000_000, "/odom", _odom(0.0)) for i in range(10)]).run()
     waits = [line for line in run.lines() if line.startswith("waiting")]
     assert len(waits) >= 10 and set(waits) == {"waiting odoms=0 clock_moved=False"}
     assert run.lines()[-1] == "interrupted in sleep"
