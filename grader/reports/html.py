@@ -55,8 +55,8 @@ def _replay_html(replay: Replay, first: bool) -> str:
     data = replay.data.replace("<", "\\u003c")  # no "</script>" inside the script element
     return f"""<section class="replay" id="{replay.anchor}" aria-label="Replay of {escape(label)}">
 <h3>{heading}</h3>
-<div class="rp-main"><div><canvas class="rp-view" width="480" height="480" role="img" aria-label="The world seen from above at the chosen time"></canvas></div>
-<div class="rp-side"><p class="rp-pose" aria-live="polite"></p><p class="rp-command"></p>
+<div class="rp-main"><div><canvas class="rp-view" width="480" height="480" tabindex="0" role="img" aria-label="The world seen from above at the chosen time"></canvas></div>
+<div class="rp-side"><p class="rp-pose"></p><p class="rp-command"></p>
 <p><b>Your node's output until then</b></p><ol class="rp-log" aria-label="Output lines until the chosen time"></ol></div></div>
 <div class="rp-controls"><button type="button" class="rp-play" aria-label="Play">▶ Play</button>
 <span role="group" aria-label="Speed"><button type="button" class="rp-speed" data-speed="1" aria-pressed="true">1×</button>

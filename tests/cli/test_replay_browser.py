@@ -69,10 +69,10 @@ def test_scrubbing_shows_the_lines_printed_until_then(browser):
 
 def test_the_keyboard_plays_pauses_and_steps(browser):
     browser.js(f"window.rosgradeReplays[{ROBOT!r}].seek(3)")
-    browser.js(f"document.querySelector('#{ROBOT} canvas').setAttribute('tabindex', '-1')")
-    browser.js(f"document.querySelector('#{ROBOT} canvas').focus()")
-    browser.key("ArrowRight", "ArrowRight", 39)
+    browser.js(f"document.getElementById({ROBOT + '-time'!r}).focus()")
+    browser.key("ArrowRight", "ArrowRight", 39)  # on the timeline: one second, not its 0.01 s step
     assert state(browser)["t"] == pytest.approx(4.0)
+    browser.js(f"document.querySelector('#{ROBOT} canvas').focus()")
     browser.key(" ", "Space", 32)
     assert state(browser)["playing"]
     browser.key(" ", "Space", 32)
