@@ -87,8 +87,8 @@ class Commands:
 
 @dataclass(frozen=True)
 class ServiceCall:
-    """One call that reached a server of the world: sim time (s), the service's name, the request's fields by name,
-    and the response's (None when the server failed the call)."""
+    """One call that reached a server (the world's or a node's): sim time (s), the service's name, the request's
+    fields by name, and the response's (None when the server failed the call or never answered it)."""
 
     t: float
     service: str
@@ -304,8 +304,9 @@ def turtle_poses(recording: Any) -> dict[str, Trajectory]:
 
 
 def service_calls(recording: Any) -> tuple[ServiceCall, ...]:
-    """The calls the world served, each request paired with the response or error recorded after it (a call is
-    answered before the next one is made); an error with no request is a call no server took (not served)."""
+    """The calls that reached a server, each request paired with the response or error recorded after it (a call is
+    answered before the next one is made), or with None if it was never answered; an error with no request is a call
+    no server took (not served)."""
     return _calls_and_params(recording)[0]
 
 
@@ -333,6 +334,9 @@ def _calls_and_params(recording: Any) -> tuple[tuple[ServiceCall, ...], tuple[Pa
         elif service in open_requests:
             t_req, request = open_requests.pop(service)
             calls.append(ServiceCall(t_req / 1e9, service, request, _fields(message) if part == "response" else None))
+    # a request a node's server never answered before the run ended
+    calls += [ServiceCall(t_ns / 1e9, service, request, None) for service, (t_ns, request) in open_requests.items()]
+    calls.sort(key=lambda call: call.t)
     return tuple(calls), tuple(params)
 
 
