@@ -13,6 +13,8 @@ from grader.reports.replay import Replay, replay_of
 
 START = 2.0  # the node starts 2 s into the world's time, as scenarios do by default
 SPEED, TURN = 0.2, 0.1  # the TurtleBot's arc: m/s and rad/s
+PILLAR = {"kind": "cylinder", "x": -0.5, "y": -0.8, "radius": 0.2}
+WALL = {"kind": "box", "x": 2.5, "y": 1.0, "yaw": 0.3, "length": 0.2, "width": 2.0}
 
 
 class Recording:
@@ -71,7 +73,8 @@ def turtle_task() -> TaskReport:
 
 
 def replays() -> list[Replay]:
-    return [replay_of(robot_task(), "nominal", Recording("turtlebot3_waffle", shutdown_at=15.0), robot_run()),
+    robot = Recording("turtlebot3_waffle", shutdown_at=15.0, obstacles=[PILLAR, WALL])
+    return [replay_of(robot_task(), "nominal", robot, robot_run()),
             replay_of(turtle_task(), "nominal", Recording("turtlesim"), turtle_run())]
 
 

@@ -132,3 +132,11 @@ def test_a_criterion_is_placed_where_its_own_quantity_says():
     task = runs.robot_task().model_copy(update={"criteria": [never_at_rest, travel]})
     replay = replay_of(task, "nominal", runs.Recording("turtlebot3_waffle"), runs.robot_run())
     assert dict(replay.moments) == {"stops_at_ctrl_c": 19.98, "travel": 15.0}  # never at rest: the end of the run
+
+
+def test_walls_and_pillars_are_in_the_view():
+    world = data(runs.replays()[0])["world"]
+    assert world["obstacles"] == [{"kind": "cylinder", "x": -0.5, "y": -0.8, "r": 0.2},
+                                  {"kind": "box", "x": 2.5, "y": 1.0, "a": 0.3, "l": 0.2, "w": 2.0}]
+    x0, y0, x1, y1 = world["bounds"]
+    assert x0 < -0.5 < x1 and y0 < -0.8 and x1 > 2.5

@@ -114,3 +114,12 @@ def test_the_page_fits_a_phone(tmp_path):
         assert phone.errors() == []
         assert phone.js("document.documentElement.scrollWidth") <= 390
         assert phone.js(f"document.querySelector('#{ROBOT} canvas').getBoundingClientRect().width") <= 390
+
+
+def test_walls_and_pillars_are_drawn_where_the_scenario_puts_them(browser):
+    probe = f"""(() => {{ const r = window.rosgradeReplays[{ROBOT!r}], c = r.canvas, b = r.data.world.bounds;
+        const k = c.width / (b[2] - b[0]); const at = (x, y) => Array.from(c.getContext('2d')
+        .getImageData(Math.round((x - b[0]) * k), Math.round((b[3] - y) * k), 1, 1).data.slice(0, 3));
+        return [at(-0.5, -0.8), at(2.5, 1.0), at(-0.5, -0.3)]; }})()"""
+    pillar, wall, floor = browser.js(probe)
+    assert pillar == wall == [107, 107, 107] and floor != pillar
