@@ -51,6 +51,8 @@ def test_every_run_has_a_working_replay(graded, browser, tmp_path, folder, tasks
     assert sorted((r.task, r.scenario) for r in files.replays) == sorted(recordings)
     assert all(len(r.data.encode()) <= RUN_BYTES for r in files.replays)
     assert files.html.stat().st_size < PAGE_BYTES
+    again = write_report_folder(report, tmp_path / "again")
+    assert again.html.read_bytes() == files.html.read_bytes()  # the same recordings, the same page
     browser.events.clear()
     browser.open(files.html)
     assert browser.errors() == []
