@@ -144,6 +144,15 @@ class ServiceRouter:
         self._answer(caller, answer.endpoint.topic, server,
                      ServiceReply(answer.status, answer.error, answer.response), t)
 
+    def node_ended(self, node: int, t: int) -> None:
+        """A node ended: the calls its servers had not answered are lost (rospy's connection closes; an rclpy
+        client's Future never completes)."""
+        for server in self.offers:
+            if server.node == node:
+                pending, server.pending = server.pending, {}
+                for caller in pending.values():
+                    self._answer(caller, server.endpoint.topic, server, ServiceReply(ch.SERVICE_LOST), t)
+
     def _answer(self, caller: Caller, service: str, server, reply: ServiceReply, t: int) -> None:
         """Record an answer at t and send it to the caller."""
         callerid = server.callerid if server is not None else self.world.node_name

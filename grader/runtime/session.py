@@ -295,6 +295,7 @@ class Session:
             if said:
                 message = f"{message}; before any rospy call it printed: {said}"
         node.outcome.status, node.outcome.message = status, message
+        self.services.node_ended(self.nodes.index(node), self.world.time_ns)
         if code is not None:
             node.outcome.exit_code = code if code >= 0 else None
             node.outcome.exit_signal = -code if code < 0 else None

@@ -84,3 +84,13 @@ def test_a_rospy_service_serves_another_node_and_its_handler_error_reaches_the_c
                        (2.4, "failed: service [/switch] responded with an error: b'error processing request: no thanks'")]
     assert [(c.request, c.response) for c in service_calls(recording)] == [
         ({"data": True}, {"success": True, "message": "done"}), ({"data": False}, None)]
+
+
+def test_a_call_whose_server_ends_before_answering_fails_as_rospys_closed_connection(tmp) -> None:
+    result, recording, printed = _run(tmp, "dying", NodeSpec(script=NODES / "rospy_die_caller.py"),
+                                      NodeSpec(script=NODES / "rospy_dying_server.py"))
+    assert result.nodes[1].exit_code == 3
+    assert [text for _, text in printed] == [
+        "failed: transport error completing service call: unable to receive data from sender, check sender's logs for "
+        "details"]
+    assert [c.response for c in service_calls(recording)] == [None]

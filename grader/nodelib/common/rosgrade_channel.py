@@ -54,7 +54,8 @@ SERVICE_OK = "ok"  # the response follows
 SERVICE_UNAVAILABLE = "unavailable"  # nothing serves that name
 SERVICE_REFUSED = "refused"  # the server refused the connection (another srv type); error: the server's reason
 SERVICE_FAILED = "failed"  # the server's handler failed; error: the text the server sent ('' from a roscpp false)
-SERVICE_STATUSES = frozenset({SERVICE_OK, SERVICE_UNAVAILABLE, SERVICE_REFUSED, SERVICE_FAILED})
+SERVICE_LOST = "lost"  # the server's node ended before it answered (rospy: the connection closed)
+SERVICE_STATUSES = frozenset({SERVICE_OK, SERVICE_UNAVAILABLE, SERVICE_REFUSED, SERVICE_FAILED, SERVICE_LOST})
 # A BATCH delivery on a server's handle with this status is a request for it to answer (RESPOND).
 SERVICE_REQUEST = "request"
 

@@ -42,6 +42,9 @@ def _failure(resolved: str, status: str, error: str) -> ServiceException:
         return ServiceException("service [%s] unavailable" % resolved)
     if status == ch.SERVICE_REFUSED:
         return ServiceException("unable to connect to service: remote error reported: %s" % error)
+    if status == ch.SERVICE_LOST:
+        return ServiceException("transport error completing service call: unable to receive data from sender, check "
+                                "sender's logs for details")
     # rospy reads the server's error text as bytes and formats them with %s (b'' for a roscpp handler's false)
     return ServiceException("service [%s] responded with an error: %s" % (resolved, error.encode()))
 
