@@ -11,6 +11,7 @@ from collections.abc import Iterable, Mapping
 from functools import lru_cache
 
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
+from rosbags.typesys.base import Nodetype
 from rosbags.typesys.store import Typestore
 
 from grader.nodelib.ros2.rosgrade_rosidl._defs import SERVICES as NODE_SERVICE_HASHES
@@ -114,7 +115,7 @@ class Ros2Catalog:
         name = self._name(type_name)
         cached = self._msgdefs.get(name)
         if cached is None:
-            cached = self._msgdefs[name] = self._store.generate_msgdef(name, ros_version=2)[0]
+            cached = self._msgdefs[name] = _msgdef(self._store, name)
         return cached
 
     def md5sum(self, type_name: str) -> str:
@@ -164,6 +165,49 @@ class Ros2Catalog:
         if name in NODE_SERVICE_HASHES or name in self._hashes:
             return NODE_SERVICE_HASHES.get(name) or self._hashes[name]
         return self._store.hash_rihs01(name if name in self._store.fielddefs else f"{name}_Request")
+
+
+def _spelled(type_name: str) -> str:
+    """A field's type in schema text: ``pkg/Name`` for a message, the full name of a service's or action's part."""
+    package, namespace, name = type_name.split("/")
+    return f"{package}/{name}" if namespace == "msg" else type_name
+
+
+def _msgdef(store: Typestore, type_name: str) -> str:
+    """rosbags' ``generate_msgdef`` text (the type, then each dependency once, depth first, after a ``MSG:`` line),
+    also for types that contain a service's or action's parts (an action's FeedbackMessage holds its Feedback),
+    which rosbags' generator refuses to name."""
+    try:
+        return store.generate_msgdef(type_name, ros_version=2)[0]
+    except AssertionError:
+        pass
+    subdefs: dict[str, str] = {}
+
+    def text(name: str) -> str:
+        consts, fields = store.fielddefs[name]
+        lines = [f"{ctype} {cname}={value}" for cname, ctype, value in consts]
+        for fname, (node, detail) in fields:
+            if fname == "structure_needs_at_least_one_member":
+                continue
+            suffix = ""
+            if node == Nodetype.ARRAY:
+                (node, detail), count = detail
+                suffix = f"[{count}]"
+            elif node == Nodetype.SEQUENCE:
+                (node, detail), count = detail
+                suffix = f"[<={count}]" if count else "[]"
+            if node == Nodetype.NAME:
+                if detail not in subdefs:
+                    subdefs[detail] = ""
+                    subdefs[detail] = text(detail)
+                lines.append(f"{_spelled(detail)}{suffix} {fname}")
+            else:
+                base, bound = detail
+                lines.append(f"{base}{'<=' + str(bound) if bound else ''}{suffix} {fname}")
+        return "\n".join([*lines, ""])
+
+    own = text(type_name)
+    return own + "".join(f"{'=' * 80}\nMSG: {_spelled(name)}\n{body}" for name, body in subdefs.items())
 
 
 def _service_name(service_name: str) -> str:

@@ -190,10 +190,13 @@ def _load_mcap(path: Path, profile: str) -> Source:
 
 def _names(schema_name: str) -> tuple[str, str]:
     """(the type as the reader spells it, the type store's name) of a schema: ``pkg/Name`` and ``pkg/msg/Name`` for
-    a message; a ROS 2 service part (``pkg/srv/Name_Request``) keeps its name, filed under ``pkg/srv/msg/``."""
+    a message; a ROS 2 service part (``pkg/srv/Name_Request``) keeps its name, filed under ``pkg/srv/msg/``, as does
+    an action's."""
     parts = schema_name.split("/")
     if len(parts) == 3 and parts[1] == "srv":
         return schema_name, f"{parts[0]}/srv/msg/{parts[2]}"
+    if len(parts) == 3 and parts[1] == "action":  # an action's part (rosbags files it under its own name)
+        return schema_name, schema_name
     type_name = ros1_type_name(schema_name)
     package, name = type_name.split("/")
     return type_name, f"{package}/msg/{name}"
