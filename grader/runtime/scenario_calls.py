@@ -2,14 +2,39 @@
 one after the other, as a script of ``ros2 service call`` commands would make them."""
 from __future__ import annotations
 
-from sim.scenario import ServiceCallSpec
+from dataclasses import dataclass
 
+from grader.recording import RecordingError
 from grader.runtime.node_link import ServiceCall
-from grader.runtime.services import Caller, ServiceRouter
+from grader.runtime.services import Caller, ServiceRouteError, ServiceRouter
+from grader.runtime.wire import Wire
+from sim.scenario import ServiceCallSpec
 
 # The grader's name on the graph (``ros2 service call`` is a node of its own too); names under /rosgrade are refused
 # to student nodes, so scoring can trust what this name called.
 CALLER_ID = "/rosgrade"
+
+
+@dataclass(frozen=True)
+class PlannedCall:
+    """A scenario's call with its request's bytes and its srv type's md5sum (RIHS01), built before the run starts."""
+
+    t_ns: int  # relative to the start
+    call: ServiceCall
+
+
+def planned_calls(calls: list[ServiceCallSpec], wire: Wire) -> list[PlannedCall]:
+    """The scenario's calls encoded for the run's wire; ServiceRouteError names a call that cannot be made."""
+    planned = []
+    for index, spec in enumerate(calls):
+        try:
+            request = wire.part_bytes(spec.type, "Request", spec.request)
+            md5sum = wire.catalog.service_md5sum(spec.type)
+        except (RecordingError, TypeError, ValueError) as exc:
+            raise ServiceRouteError(f"scenario service_calls[{index}] to {spec.service}: {spec.request} is not a "
+                                    f"request of {spec.type}: {exc}") from None
+        planned.append(PlannedCall(spec.t_ns, ServiceCall(spec.service, spec.type, md5sum, False, request)))
+    return planned
 
 
 class ScenarioCaller:
@@ -17,8 +42,8 @@ class ScenarioCaller:
     offered yet waits for it (``ros2 service call`` prints "waiting for service to become available..." meanwhile)
     and goes out when a node offers it."""
 
-    def __init__(self, calls: list[ServiceCallSpec], start_ns: int, router: ServiceRouter) -> None:
-        self._calls = [(start_ns + call.t_ns, call) for call in calls]
+    def __init__(self, calls: list[PlannedCall], start_ns: int, router: ServiceRouter) -> None:
+        self._calls = [(start_ns + planned.t_ns, planned.call) for planned in calls]
         self._next = 0
         self._busy = False  # a call is out and not answered yet
         self._router = router
@@ -36,14 +61,10 @@ class ScenarioCaller:
         if self._busy or self._next >= len(self._calls):
             return
         due, call = self._calls[self._next]
-        server = self._router.server(call.service)
-        if due > t or server is None:
+        if due > t or self._router.server(call.service) is None:
             return
         self._busy = True
-        request = self._router.request_bytes(call.type, call.request)
-        md5sum = self._router.wire.catalog.service_md5sum(call.type)
-        self._router.call(Caller(CALLER_ID, "grader", done=self._answered),
-                          ServiceCall(call.service, call.type, md5sum, False, request), t)
+        self._router.call(Caller(CALLER_ID, "grader", done=self._answered), call, t)
 
     def _answered(self, status: str, error: str, response: bytes) -> None:
         self._busy = False

@@ -22,7 +22,7 @@ SERVICE_PREFIX = "/rosgrade/service"
 
 
 class ServiceRouteError(Exception):
-    """A call the grader itself makes cannot be built (a scenario's request that does not fit its srv type)."""
+    """A call the grader itself would make cannot be built (a scenario's request that does not fit its srv type)."""
 
 
 @dataclass(frozen=True)
@@ -169,10 +169,3 @@ class ServiceRouter:
             caller.done(reply.status, reply.error, reply.response)
         elif caller.node is not None:
             self.deliver(caller.node, (caller.ident, reply.response, (caller.seq, reply.status, reply.error)))
-
-    def request_bytes(self, srv_type: str, values: dict) -> bytes:
-        """A request of ``srv_type`` from plain field values (what the grader sends, as ``ros2 service call``)."""
-        try:
-            return self.wire.part_bytes(srv_type, "Request", values)
-        except Exception as exc:  # noqa: BLE001 - the catalog and the message class raise assorted errors
-            raise ServiceRouteError(f"a request of {srv_type} cannot be {values}: {exc}") from None

@@ -30,8 +30,8 @@ from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, 
                                       Publication, ServiceAnswer, ServiceCall, ServiceOffer, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
-from grader.runtime.scenario_calls import ScenarioCaller
-from grader.runtime.services import Caller, ServiceRouter
+from grader.runtime.scenario_calls import ScenarioCaller, planned_calls
+from grader.runtime.services import Caller, ServiceRouteError, ServiceRouter
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from grader.runtime.wire import wire_for
@@ -191,6 +191,10 @@ class Session:
         self._ahead: _Speculation | None = None  # the world run ahead of the node now running, until settled
         self.services: ServiceRouter | None = None  # who serves what, and the calls in flight (grader/runtime/services)
         self.caller: ScenarioCaller | None = None  # the scenario's own service calls
+        try:
+            self._calls = planned_calls(spec.scenario.service_calls, self.wire)
+        except ServiceRouteError as exc:
+            raise RunError(str(exc)) from None
 
     # -- public ------------------------------------------------------------------------------------------------
     def run(self) -> RunResult:
@@ -224,7 +228,7 @@ class Session:
             self.services = ServiceRouter(self.wire, self.world, rec.write,
                                           lambda index, item: self.nodes[index].deliveries.append(item),
                                           self._world_sample, self._take_declarations)
-            self.caller = ScenarioCaller(self.spec.scenario.service_calls, self.start_ns, self.services)
+            self.caller = ScenarioCaller(self._calls, self.start_ns, self.services)
             try:
                 with timing.stage("node start-up", absorb=True):
                     for node in list(self.nodes):

@@ -2,6 +2,7 @@
 one after the other, waiting for a service that is not offered yet; the world's services are called the same way."""
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -9,7 +10,7 @@ import pytest
 from grader.metrics.run import service_calls
 from grader.recording import Recording
 from grader.runtime import NodeSpec, RunSpec
-from grader.runtime.session import run
+from grader.runtime.session import RunError, run
 from sim import Scenario
 
 pytestmark = pytest.mark.slow
@@ -60,3 +61,16 @@ def test_a_call_goes_out_at_its_time_while_the_world_runs_ahead_of_a_busy_server
         tmp_path / "busy.mcap", tmp_path / "busy.log")
     calls = service_calls(Recording.open(tmp_path / "busy.mcap"))
     assert [(round(c.t, 6), c.response) for c in calls] == [(2.555, {"sum": 10}), (3.234, {"sum": 11})]
+
+
+@pytest.mark.parametrize("call, says", [
+    ({"type": ADD, "request": {"a": 1, "c": 2}}, "service_calls[0] to /add_two_ints: {'a': 1, 'c': 2} is not a "
+                                                 "request of example_interfaces/srv/AddTwoInts"),
+    ({"type": "nope/srv/Nope", "request": {}}, "unknown message type 'nope/srv/Nope_Request'"),
+])
+def test_a_call_the_scenario_cannot_make_stops_the_run_before_it_starts(tmp_path, call: dict, says: str) -> None:
+    scenario = Scenario(duration=1.0, service_calls=[{"t": 0.5, "service": "/add_two_ints", **call}])
+    with pytest.raises(RunError, match=re.escape(says)):
+        run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=NODES / "add_server.py", flavour="ros2"),)),
+            tmp_path / "bad.mcap", tmp_path / "bad.log")
+    assert not (tmp_path / "bad.mcap").exists()
