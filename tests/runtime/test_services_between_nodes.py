@@ -81,7 +81,8 @@ def test_a_rospy_service_serves_another_node_and_its_handler_error_reaches_the_c
     assert result.nodes[0].status == "exited", result.nodes[0].message
     assert printed == [(2.4, "up at 2.400"), (2.4, "serve True at 2.400"), (2.4, "got done at 2.400"),
                        (2.4, "serve False at 2.400"),
-                       (2.4, "failed: service [/switch] responded with an error: b'error processing request: no thanks'")]
+                       (2.4, "failed: service [/switch] responded with an error: b'error processing request: no "
+                             "thanks'")]
     assert [(c.request, c.response) for c in service_calls(recording)] == [
         ({"data": True}, {"success": True, "message": "done"}), ({"data": False}, None)]
 
