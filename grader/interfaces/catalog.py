@@ -11,7 +11,7 @@ import json
 from rosbags.typesys.base import Nodetype
 from rosbags.typesys.store import Typestore
 
-from grader.interfaces.derived import action_types, rihs01_hasher, ros1_service_md5, service_types
+from grader.interfaces.derived import action_types, ros1_service_md5, service_types
 from grader.interfaces.reading import InterfaceSet, TypeDef
 from grader.nodelib.ros1.genpy import _msgdefs as ros1_node_defs
 from grader.nodelib.ros2.rosgrade_rosidl import _defs as ros2_node_defs
@@ -50,8 +50,7 @@ def catalog_for(flavour: str, interfaces: InterfaceSet | None) -> Ros2Catalog | 
         raise CatalogError(f"{interfaces.flavour} interfaces cannot serve a {flavour} run")
     if flavour == "ros2":
         types, services = _ros2_extra(interfaces)
-        hasher = rihs01_hasher({**ros2_catalog().typestore.fielddefs, **types})
-        return Ros2Catalog(types, services, {name: hasher.hash_rihs01(name) for name in types})
+        return Ros2Catalog(types, services)
     catalog = MessageCatalog(interfaces.types)
     md5s = {_ros1_name(service): ros1_service_md5(catalog.typestore, request, response)
             for service, (request, response) in interfaces.services.items()}
@@ -93,24 +92,22 @@ def _field(name: str, desc: tuple, defaults: dict) -> list:
     return [name, base, kind, size, bound, defaults.get(name)]
 
 
-def ros2_entry(store: Typestore, hasher: Typestore, name: str, defaults: dict) -> list:
+def ros2_entry(catalog: Ros2Catalog, name: str, defaults: dict) -> list:
     """A type as the node's definition table holds it: [fields, constants, RIHS01]."""
-    consts, fields = store.fielddefs[name]
+    consts, fields = catalog.typestore.fielddefs[name]
     return [[_field(fname, desc, defaults) for fname, desc in fields],
-            [[cname, ctype, value] for cname, ctype, value in consts], hasher.hash_rihs01(name)]
+            [[cname, ctype, value] for cname, ctype, value in consts], catalog.md5sum(name)]
 
 
 def _ros2_payload(interfaces: InterfaceSet) -> dict:
     types, services = _ros2_extra(interfaces)
     catalog = Ros2Catalog(types, services)
-    store = catalog.typestore
-    hasher = rihs01_hasher(store.fielddefs)
     structs = set(services) | set(interfaces.actions)
     wanted = [name for name in types if name not in structs]
-    messages = {name: ros2_entry(store, hasher, name, interfaces.defaults.get(name, {}))
-                for name in _dependencies(store, wanted) if name not in ros2_node_defs.MESSAGES}
-    return {"messages": messages, "services": {name: hasher.hash_rihs01(name) for name in services},
-            "actions": {name: hasher.hash_rihs01(name) for name in interfaces.actions}}
+    messages = {name: ros2_entry(catalog, name, interfaces.defaults.get(name, {}))
+                for name in _dependencies(catalog.typestore, wanted) if name not in ros2_node_defs.MESSAGES}
+    return {"messages": messages, "services": {name: catalog.service_md5sum(name) for name in services},
+            "actions": {name: catalog.md5sum(name) for name in interfaces.actions}}
 
 
 def _ros1_payload(interfaces: InterfaceSet) -> dict:

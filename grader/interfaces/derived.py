@@ -7,7 +7,6 @@ and its ``FeedbackMessage``, each carrying the goal's UUID as rcl_action puts it
 """
 from __future__ import annotations
 
-from collections.abc import Mapping
 from hashlib import md5
 
 from rosbags.typesys.base import Nodetype
@@ -70,26 +69,6 @@ def action_types(action: str, goal: TypeDef, result: TypeDef, feedback: TypeDef)
         ("feedback_message", _name(f"{action}_FeedbackMessage")),
     ])
     return types
-
-
-def _uint8_char(desc: tuple) -> tuple:
-    node, detail = desc
-    if node in (Nodetype.ARRAY, Nodetype.SEQUENCE):
-        return (node, (_uint8_char(detail[0]), detail[1]))
-    if node == Nodetype.BASE and detail[0] == "char":
-        return (node, ("uint8", detail[1]))
-    return desc
-
-
-def rihs01_hasher(fielddefs: Mapping[str, TypeDef]) -> Typestore:
-    """A type store of ``fielddefs`` (rosbags definitions) whose ``hash_rihs01`` gives rosidl's hashes: rosidl_adapter turns a .msg ``char`` into
-    IDL ``uint8`` before the type description is hashed, where rosbags hashes it as a char (so rosbags' hash of
-    std_msgs/msg/Char and of service_msgs/msg/ServiceEventInfo, which every service's hash covers, differ from a
-    ROS 2 install's). ``hash_rihs01`` reads nothing but ``fielddefs``."""
-    view = Typestore.__new__(Typestore)
-    view.fielddefs = {name: (consts, [(fname, _uint8_char(desc)) for fname, desc in fields])
-                      for name, (consts, fields) in fielddefs.items()}
-    return view
 
 
 def ros1_md5_text(store: Typestore, type_name: str) -> str:

@@ -76,16 +76,16 @@ class Ros2Catalog:
     message_encoding = "cdr"
     log_levels = frozenset({10, 20, 30, 40, 50})  # rcl_interfaces/msg/Log severities
 
-    def __init__(self, extra: Mapping[str, tuple] | None = None, services: Iterable[str] = (),
-                 hashes: Mapping[str, str] | None = None) -> None:
+    def __init__(self, extra: Mapping[str, tuple] | None = None, services: Iterable[str] = ()) -> None:
         """The built-in types, plus ``extra`` rosbags definitions (a submission's own, with the types rosidl
-        derives from its services and actions), the service types among them and their RIHS01 hashes."""
+        derives from its services and actions) and the service types among them."""
         self._store = _catalog_typestore()
         if extra:
             self._store.register(dict(extra))
         self._services = frozenset(SERVICES) | frozenset(services)
         self._msgdefs: dict[str, str] = {}
-        self._hashes: dict[str, str] = dict(hashes or {})
+        self._hashes: dict[str, str] = {}
+        self._hasher: Typestore | None = None
 
     @staticmethod
     def canonical(type_name: str) -> str:
@@ -123,8 +123,13 @@ class Ros2Catalog:
         name = self._name(type_name)
         cached = self._hashes.get(name)
         if cached is None:
-            cached = self._hashes[name] = self._store.hash_rihs01(name)
+            cached = self._hashes[name] = self._rosidl_hash(name)
         return cached
+
+    def _rosidl_hash(self, name: str) -> str:
+        if self._hasher is None:
+            self._hasher = rihs01_hasher(self._store.fielddefs)
+        return self._hasher.hash_rihs01(name)
 
     def message_class(self, type_name: str) -> type:
         return self._store.types[self._name(type_name)]
@@ -162,9 +167,29 @@ class Ros2Catalog:
         name = _service_name(service_name)
         if name not in self._services:
             raise RecordingError(f"unknown service type {service_name!r}")
-        if name in NODE_SERVICE_HASHES or name in self._hashes:
-            return NODE_SERVICE_HASHES.get(name) or self._hashes[name]
-        return self._store.hash_rihs01(name if name in self._store.fielddefs else f"{name}_Request")
+        if name in NODE_SERVICE_HASHES:
+            return NODE_SERVICE_HASHES[name]
+        return self.md5sum(name if name in self._store.fielddefs else f"{name}_Request")
+
+
+def _uint8_char(desc: tuple) -> tuple:
+    node, detail = desc
+    if node in (Nodetype.ARRAY, Nodetype.SEQUENCE):
+        return (node, (_uint8_char(detail[0]), detail[1]))
+    if node == Nodetype.BASE and detail[0] == "char":
+        return (node, ("uint8", detail[1]))
+    return desc
+
+
+def rihs01_hasher(fielddefs: Mapping[str, tuple]) -> Typestore:
+    """A type store of ``fielddefs`` (rosbags definitions) whose ``hash_rihs01`` gives rosidl's hashes: rosidl_adapter turns a .msg ``char`` into
+    IDL ``uint8`` before the type description is hashed, where rosbags hashes it as a char (so rosbags' hash of
+    std_msgs/msg/Char and of service_msgs/msg/ServiceEventInfo, which every service's hash covers, differ from a
+    ROS 2 install's). ``hash_rihs01`` reads nothing but ``fielddefs``."""
+    view = Typestore.__new__(Typestore)
+    view.fielddefs = {name: (consts, [(fname, _uint8_char(desc)) for fname, desc in fields])
+                      for name, (consts, fields) in fielddefs.items()}
+    return view
 
 
 def _spelled(type_name: str) -> str:

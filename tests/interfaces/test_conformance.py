@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 
 from grader.interfaces import catalog_for, run_interfaces
-from grader.interfaces.derived import rihs01_hasher
 from grader.nodelib import pythonpath
-from grader.recording.ros2_messages import ros2_catalog
+from grader.nodelib.ros2.rosgrade_rosidl import _defs as node_defs
+from grader.recording.ros2_messages import rihs01_hasher, ros2_catalog
 from grader.workspace import read_workspace
 
 HERE = Path(__file__).resolve().parent
@@ -94,6 +94,20 @@ def test_built_in_hashes_as_rosidl_computes_them() -> None:
             different.append(name)
     assert compared >= 100
     assert different == []
+
+
+@pytest.mark.skipif(_venv_reason() is not None, reason=str(_venv_reason()))
+def test_node_table_hashes_as_rosidl_computes_them() -> None:
+    """What a node's classes say (rosgrade_rosidl's table, services too) for every type the venv describes."""
+    ours = {name: json.loads(entry)[2] for name, entry in node_defs.MESSAGES.items()} | node_defs.SERVICES
+    real = {}
+    for name in ours:
+        path = VENV / "share" / f"{name}.json"
+        if path.exists():
+            real[name] = {item["type_name"]: item["hash_string"]
+                          for item in json.loads(path.read_text())["type_hashes"]}[name]
+    assert len(real) >= 100
+    assert {name: ours[name] for name in real} == real
 
 
 # -- ROS 1 ---------------------------------------------------------------------------------------------------------

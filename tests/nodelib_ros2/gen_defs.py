@@ -11,6 +11,9 @@ from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 from rosbags.typesys.base import Nodetype
 from rosbags.typesys.store import Typestore
 
+from grader.interfaces.derived import service_types
+from grader.recording.ros2_messages import rihs01_hasher
+
 TARGET = Path(__file__).resolve().parents[2] / "grader" / "nodelib" / "ros2" / "rosgrade_rosidl" / "_defs.py"
 
 PACKAGES = ("builtin_interfaces", "std_msgs", "geometry_msgs", "nav_msgs", "sensor_msgs", "rosgraph_msgs",
@@ -37,23 +40,8 @@ _DUMMY = "structure_needs_at_least_one_member"
 
 def _service_types(service: str, request: str, response: str) -> dict:
     """The request, response and event messages and the service itself as rosidl describes it for hashing."""
-    types = {}
-    for suffix, text in (("_Request", request), ("_Response", response)):
-        ((_, (consts, fields)),) = get_types_from_msg(text, "pkg/msg/Part").items()
-        # rosidl gives a member-less struct one uint8 member, as rosbags' std_msgs/msg/Empty has it.
-        types[service + suffix] = (consts, fields or [(_DUMMY, (Nodetype.BASE, ("uint8", 0)))])
-    types[f"{service}_Event"] = ([], [
-        ("info", (Nodetype.NAME, "service_msgs/msg/ServiceEventInfo")),
-        ("request", (Nodetype.SEQUENCE, ((Nodetype.NAME, f"{service}_Request"), 1))),
-        ("response", (Nodetype.SEQUENCE, ((Nodetype.NAME, f"{service}_Response"), 1))),
-    ])
-    # A service's RIHS01 is that of a struct holding its three messages (rosidl_generator_type_description).
-    types[service] = ([], [
-        ("request_message", (Nodetype.NAME, f"{service}_Request")),
-        ("response_message", (Nodetype.NAME, f"{service}_Response")),
-        ("event_message", (Nodetype.NAME, f"{service}_Event")),
-    ])
-    return types
+    parts = [next(iter(get_types_from_msg(text, "pkg/msg/Part").values())) for text in (request, response)]
+    return service_types(service, *parts)
 
 
 def typestore() -> Typestore:
@@ -80,6 +68,7 @@ def _field(name: str, desc: tuple, defaults: dict) -> tuple:
 def table(store: Typestore) -> tuple[dict, dict]:
     """MESSAGES and SERVICES as they go into _defs.py."""
     messages = {}
+    hasher = rihs01_hasher(store.fielddefs)  # rosidl's hashes: a .msg char is IDL uint8
     names = sorted(n for n in store.fielddefs if n.split("/")[0] in PACKAGES and n not in SERVICES)
     for name in names:
         consts, fields = store.fielddefs[name]
@@ -87,9 +76,9 @@ def table(store: Typestore) -> tuple[dict, dict]:
         messages[name] = (
             tuple(_field(fname, desc, defaults) for fname, desc in fields),
             tuple((cname, ctype, value) for cname, ctype, value in consts),
-            store.hash_rihs01(name),
+            hasher.hash_rihs01(name),
         )
-    services = {name: store.hash_rihs01(name) for name in sorted(SERVICES)}
+    services = {name: hasher.hash_rihs01(name) for name in sorted(SERVICES)}
     return messages, services
 
 
