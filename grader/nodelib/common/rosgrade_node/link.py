@@ -103,10 +103,11 @@ class Link:
         self.send(ch.encode_id_bytes(kind, ident, data), inert)
 
     def call(self, header: dict, request: bytes) -> tuple[dict, bytes]:
-        """Send a CALL and read its REPLY: (the reply's header, the response bytes).
+        """Send a probe CALL and read its REPLY: (the reply's header, the response bytes). A real call's answer comes
+        in a later BATCH instead.
 
-        The grader answers at once, before anything else, so only the thread holding the scheduler's token may call
-        (no other thread reads the channel meanwhile)."""
+        The grader answers a probe at once, before anything else, so only the thread holding the scheduler's token
+        may probe (no other thread reads the channel meanwhile)."""
         self.send(ch.encode_header_bytes(ch.CALL, header, request))
         try:
             head, response = ch.split_header_bytes(self._read(ch.REPLY))
