@@ -9,10 +9,12 @@ from mcap.reader import make_reader
 from rosbags.typesys import Stores, get_typestore, get_types_from_msg
 
 from grader.interfaces import run_interfaces
+from grader.recording import Recording
 from grader.runtime import NodeSpec, RunSpec
 from grader.runtime.session import run
 from grader.workspace import read_workspace
 from sim import Scenario
+from sim.scenario import ServiceCallSpec
 
 pytestmark = pytest.mark.slow
 
@@ -67,3 +69,71 @@ def test_a_student_message_is_published_recorded_and_decoded(tmp_path: Path) -> 
                                                                                    [0.5, 0.25, 0.25])
     log = (tmp_path / "run.log").read_text()
     assert "number_game_interfaces.srv.MyNumberGame_Request(guess=3, cheat=False)" in log
+
+
+SERVER = """import rclpy
+from rclpy.node import Node
+from number_game_interfaces.srv import MyNumberGame
+
+
+class Game(Node):
+    def __init__(self):
+        super().__init__("number_game")
+        self.guesses = 0
+        self.create_service(MyNumberGame, "guess_the_number", self.answer)
+
+    def answer(self, request, response):
+        self.guesses += 1
+        response.num_guesses = self.guesses
+        response.correct = request.guess == 7
+        response.hint = "Correct" if response.correct else ("Higher" if request.guess < 7 else "Lower")
+        return response
+
+
+rclpy.init()
+rclpy.spin(Game())
+"""
+
+
+def test_the_grader_calls_a_student_service_of_the_student_s_type(tmp_path: Path) -> None:
+    script = tmp_path / "number_game.py"
+    script.write_text(SERVER)
+    calls = [ServiceCallSpec(t=0.5, service="/guess_the_number", type="number_game_interfaces/srv/MyNumberGame",
+                             request={"guess": g, "cheat": False}) for g in (3, 7)]
+    spec = RunSpec(scenario=Scenario(duration=1.5, service_calls=calls),
+                   nodes=(NodeSpec(script=script, flavour="ros2"),),
+                   interfaces=run_interfaces(read_workspace(EXAMPLE), "ros2"))
+    result = run(spec, tmp_path / "run.mcap", tmp_path / "run.log")
+    assert result.nodes[0].status == "stopped_at_end", (tmp_path / "run.log").read_text()[-2000:]
+    recording = Recording.open(tmp_path / "run.mcap")
+    responses = [(m.num_guesses, m.hint, m.correct)
+                 for _, m in recording.messages("/rosgrade/service/guess_the_number/response")]
+    assert responses == [(1, "Higher", False), (2, "Correct", True)]
+
+
+ROSPY_NODE = """#!/usr/bin/env python3
+import rospy
+from game_msgs.msg import Tag
+from game_msgs.srv import MyNumberGameRequest
+
+rospy.init_node("tagger")
+pub = rospy.Publisher("tags", Tag, queue_size=1)
+rospy.loginfo(str(MyNumberGameRequest(guess=4)).replace("\\n", " "))
+rate = rospy.Rate(10)
+while not rospy.is_shutdown():
+    pub.publish(Tag(name="seven"))
+    rate.sleep()
+"""
+
+
+def test_a_rospy_node_publishes_a_student_message(tmp_path: Path) -> None:
+    script = tmp_path / "tagger.py"
+    script.write_text(ROSPY_NODE)
+    spec = RunSpec(scenario=Scenario(duration=1.0), nodes=(NodeSpec(script=script),),
+                   interfaces=run_interfaces(read_workspace(Path(__file__).parent / "game_msgs"), "ros1"))
+    result = run(spec, tmp_path / "run.mcap", tmp_path / "run.log")
+    assert result.nodes[0].status == "stopped_at_end", (tmp_path / "run.log").read_text()[-2000:]
+    recording = Recording.open(tmp_path / "run.mcap")
+    names = [m.name for _, m in recording.messages("/tags")]
+    assert names and set(names) == {"seven"}
+    assert "guess: 4 cheat: False" in (tmp_path / "run.log").read_text()
