@@ -119,7 +119,7 @@ def _ros1_payload(interfaces: InterfaceSet) -> dict:
                 for name in _dependencies(store, wanted + service_parts)
                 if name not in parts and _ros1_name(name) not in ros1_node_defs.MESSAGES
                 and not name.startswith("builtin_interfaces/")}
-    services = {_ros1_name(service): store.gendefhash(request, {}, 1)[0] + "---\n" + store.gendefhash(response, {}, 1)[0]
+    services = {_ros1_name(service): "---\n".join(store.gendefhash(part, {}, 1)[0] for part in (request, response))
                 for service, (request, response) in interfaces.services.items()}
     return {"messages": messages, "services": services}
 

@@ -71,6 +71,22 @@ def action_types(action: str, goal: TypeDef, result: TypeDef, feedback: TypeDef)
     return types
 
 
+def ros1_action_types(package: str, action: str) -> dict[str, TypeDef]:
+    """The four messages genmsg wraps an action's Goal, Result and Feedback in, as actionlib sends them."""
+    name = f"{package}/msg/{action}"
+    header, status = _name("std_msgs/msg/Header"), _name("actionlib_msgs/msg/GoalStatus")
+    return {
+        f"{name}ActionGoal": ([], [("header", header), ("goal_id", _name("actionlib_msgs/msg/GoalID")),
+                                   ("goal", _name(f"{name}Goal"))]),
+        f"{name}ActionResult": ([], [("header", header), ("status", status), ("result", _name(f"{name}Result"))]),
+        f"{name}ActionFeedback": ([], [("header", header), ("status", status),
+                                       ("feedback", _name(f"{name}Feedback"))]),
+        f"{name}Action": ([], [("action_goal", _name(f"{name}ActionGoal")),
+                               ("action_result", _name(f"{name}ActionResult")),
+                               ("action_feedback", _name(f"{name}ActionFeedback"))]),
+    }
+
+
 def ros1_md5_text(store: Typestore, type_name: str) -> str:
     """genmsg's md5 text of a type in ``store``: constants, then fields with nested types replaced by their md5."""
     consts, fields = store.fielddefs[type_name]

@@ -16,6 +16,7 @@ from rosbags.typesys import get_types_from_msg
 from rosbags.typesys.base import Nodetype
 
 from grader.interfaces.defaults import field_defaults
+from grader.interfaces.derived import ros1_action_types
 from grader.workspace.manifest import read_regular
 from grader.workspace.model import Package
 
@@ -104,7 +105,8 @@ def _parts(kind: str, package: str, stem: str, flavour: str) -> list[str]:
             for p in ACTION_PARTS]
 
 
-def _read_file(path: Path, kind: str, package: str, flavour: str, budget: list[int]) -> tuple[_Parsed | None, str | None]:
+def _read_file(path: Path, kind: str, package: str, flavour: str,
+               budget: list[int]) -> tuple[_Parsed | None, str | None]:
     where = f"{package}/{kind}/{path.name}"
     if not _NAME.match(path.stem):
         return None, f"{where}: '{path.stem}' is not a valid interface name (CamelCase letters and digits); rosidl " \
@@ -133,6 +135,8 @@ def _read_file(path: Path, kind: str, package: str, flavour: str, budget: list[i
             return None, problem
         assert typedef is not None
         types[name] = typedef
+    if kind == "action" and flavour == "ros1":
+        types.update(ros1_action_types(package, path.stem))
     return _Parsed(where, types, sections), None
 
 

@@ -182,10 +182,10 @@ def _uint8_char(desc: tuple) -> tuple:
 
 
 def rihs01_hasher(fielddefs: Mapping[str, tuple]) -> Typestore:
-    """A type store of ``fielddefs`` (rosbags definitions) whose ``hash_rihs01`` gives rosidl's hashes: rosidl_adapter turns a .msg ``char`` into
-    IDL ``uint8`` before the type description is hashed, where rosbags hashes it as a char (so rosbags' hash of
-    std_msgs/msg/Char and of service_msgs/msg/ServiceEventInfo, which every service's hash covers, differ from a
-    ROS 2 install's). ``hash_rihs01`` reads nothing but ``fielddefs``."""
+    """A type store of ``fielddefs`` (rosbags definitions) whose ``hash_rihs01`` gives rosidl's hashes:
+    rosidl_adapter turns a .msg ``char`` into IDL ``uint8`` before the type description is hashed, where rosbags
+    hashes it as a char (so rosbags' hash of std_msgs/msg/Char and of service_msgs/msg/ServiceEventInfo, which every
+    service's hash covers, differ from a ROS 2 install's). ``hash_rihs01`` reads nothing but ``fielddefs``."""
     view = Typestore.__new__(Typestore)
     view.fielddefs = {name: (consts, [(fname, _uint8_char(desc)) for fname, desc in fields])
                       for name, (consts, fields) in fielddefs.items()}

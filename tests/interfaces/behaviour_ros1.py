@@ -20,7 +20,8 @@ def behaviour(modules: dict, io) -> dict:
     return {
         "str": {name: str(obj) for name, obj in (("Guess", guess), ("Request", request(guess=3)),
                                                     ("Response", response(hint="Higher")))},
-        "slots": {cls.__name__: [list(cls.__slots__), list(cls._slot_types)] for cls in (Guess, Tag, request, response)},
+        "slots": {cls.__name__: [list(cls.__slots__), list(cls._slot_types)]
+                  for cls in (Guess, Tag, request, response)},
         "types": [Guess._type, Game._type, request._type, response._type, Game._request_class.__name__],
         "md5sums": [Guess._md5sum, Tag._md5sum, Game._md5sum, request._md5sum, response._md5sum],
         "has_header": Guess._has_header,

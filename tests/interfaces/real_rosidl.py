@@ -42,8 +42,7 @@ def main() -> None:
     args = {"package_name": name, "output_dir": str(py_dir / name), "template_dir":
             str(prefix / "share" / "rosidl_generator_py" / "resource"), "idl_tuples": idl_tuples,
             "target_dependencies": [], "type_description_tuples": [
-                f"{p.relative_to(idl_dir).with_suffix('.idl')}:{hashes_dir / p.relative_to(idl_dir).with_suffix('.json')}"
-                for p in idls]}
+                f"{p.relative_to(idl_dir)}:{hashes_dir / p.relative_to(idl_dir).with_suffix('.json')}" for p in idls]}
     (work / "py_args.json").write_text(json.dumps(args))
     generate_py(str(work / "py_args.json"), [])
     sys.path.insert(0, str(py_dir))

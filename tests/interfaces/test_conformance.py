@@ -16,6 +16,7 @@ from grader.nodelib import pythonpath
 from grader.nodelib.ros2.rosgrade_rosidl import _defs as node_defs
 from grader.recording.ros2_messages import rihs01_hasher, ros2_catalog
 from grader.workspace import read_workspace
+from tests.interfaces.workspaces import package
 
 HERE = Path(__file__).resolve().parent
 EXAMPLE = HERE.parents[1] / "reference_solutions_ros2_cmake"
@@ -141,3 +142,38 @@ def test_ros1_record_is_what_genpy_gives_now(tmp_path: Path) -> None:
     out = subprocess.run([DEBIAN_PYTHON, str(HERE / "real_genpy.py"), str(HERE / "game_msgs"), str(tmp_path)],
                          capture_output=True, text=True, timeout=120, check=True, cwd=HERE)
     assert json.loads(out.stdout) == _record("real_genpy_record.json")
+
+
+# genmsg's md5sums of actionlib's TwoInts action (Debian python3-actionlib 1.14.0, `actionlib.msg`), whose
+# definition is the one written below; an md5sum does not depend on the package's name.
+TWO_INTS = "int64 a\nint64 b\n---\nint64 sum\n---\n"
+TWO_INTS_MD5 = {"TwoIntsAction": "6d1aa538c4bd6183a2dfb7fcac41ee50",
+                "TwoIntsActionGoal": "684a2db55d6ffb8046fb9d6764ce0860",
+                "TwoIntsActionResult": "3ba7dea8b8cddcae4528ade4ef74b6e7",
+                "TwoIntsActionFeedback": "aae20e09065c3809e8a8e87c4c8953fd",
+                "TwoIntsGoal": "36d09b846be0b371c5f190354dd3153e", "TwoIntsResult": "b88405221c77b1878a3cbbfff53428d7",
+                "TwoIntsFeedback": "d41d8cd98f00b204e9800998ecf8427e"}
+
+
+def test_ros1_action_messages_are_genmsg_s(tmp_path: Path) -> None:
+    package(tmp_path, "two_ints_msgs", {"action/TwoInts.action": TWO_INTS}, flavour="ros1")
+    found = run_interfaces(read_workspace(tmp_path), "ros1")
+    catalog = catalog_for("ros1", found)
+    assert {name: catalog.md5sum(f"two_ints_msgs/{name}") for name in TWO_INTS_MD5} == TWO_INTS_MD5
+    # the node's genpy computes the same from what it is given (GoalID and GoalStatus included)
+    script = ("import json, sys, rosgrade_interfaces\nrosgrade_interfaces.install(json.load(open(sys.argv[1])))\n"
+              "import two_ints_msgs.msg as m\nprint(json.dumps({n: getattr(m, n)._md5sum for n in sys.argv[2:]}))\n")
+    (tmp_path / "payload.json").write_text(json.dumps(found.payload))
+    out = subprocess.run([sys.executable, "-B", "-c", script, str(tmp_path / "payload.json"), *TWO_INTS_MD5],
+                         capture_output=True, text=True, env={**os.environ, "PYTHONPATH": pythonpath("ros1")},
+                         timeout=60, check=True)
+    assert json.loads(out.stdout) == TWO_INTS_MD5
+
+
+@pytest.mark.skipif(_debian_reason() is not None, reason=str(_debian_reason()))
+def test_two_ints_md5sums_are_debian_actionlib_s() -> None:
+    script = "import json, actionlib.msg as m, sys\nprint(json.dumps({n: getattr(m, n)._md5sum for n in sys.argv[1:]}))"
+    out = subprocess.run([DEBIAN_PYTHON, "-c", script, *TWO_INTS_MD5], capture_output=True, text=True, timeout=60)
+    if out.returncode != 0:
+        pytest.skip("Debian's python3-actionlib is not installed")
+    assert json.loads(out.stdout) == TWO_INTS_MD5

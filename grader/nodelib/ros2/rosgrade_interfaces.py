@@ -24,7 +24,8 @@ class _Loader(importlib.abc.Loader):
 
     def exec_module(self, module: types.ModuleType) -> None:
         if module.__name__.count(".") == 1:
-            module.__getattr__, module.__dir__, module.__all__ = lazy_module(module.__name__)  # type: ignore[attr-defined]
+            module_getattr, module_dir, names = lazy_module(module.__name__)
+            module.__getattr__, module.__dir__, module.__all__ = module_getattr, module_dir, names  # type: ignore
         else:
             module.__doc__ = f"{module.__name__}: the submission's interfaces (rosgrade's rosidl runtime)."
 
@@ -34,7 +35,8 @@ class _Finder(importlib.abc.MetaPathFinder):
         self.packages = packages
         self.loader = _Loader()
 
-    def find_spec(self, fullname: str, path: object = None, target: object = None) -> importlib.machinery.ModuleSpec | None:
+    def find_spec(self, fullname: str, path: object = None,
+                  target: object = None) -> importlib.machinery.ModuleSpec | None:
         parts = fullname.split(".")
         if parts[0] not in self.packages or len(parts) > 2 or (len(parts) == 2 and parts[1] not in _NAMESPACES):
             return None
