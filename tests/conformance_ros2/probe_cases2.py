@@ -244,6 +244,11 @@ CASES = [
         "call raised TimeoutError",
         "end",
     ), stderr_empty=True),
+    Case("p13_call_in_callback_multi", "p13_call_in_callback.py", args=("multi", *SIM_TIME), stdout=(
+        "wait_for_service -> True",
+        "call raised TimeoutError",
+        "end",
+    ), stderr_empty=True),
     Case("p13_call_in_callback_reentrant", "p13_call_in_callback.py", args=("reentrant", *SIM_TIME), stdout=(
         "wait_for_service -> True",
         "call returned success True",

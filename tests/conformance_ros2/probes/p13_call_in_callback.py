@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Probe 13: Client.call inside a timer callback. In the node's default (mutually exclusive) group on a
 single-threaded executor nothing takes the response while the callback waits: the call times out (the classic
-deadlock, with a timeout so the probe ends). With the client and the timer in a reentrant group under a
-MultiThreadedExecutor another thread takes it and the call returns. argv[1]: "single" or "reentrant"."""
+deadlock, with a timeout so the probe ends), nor on a MultiThreadedExecutor while the group is busy with the timer.
+With the client and the timer in a reentrant group under a MultiThreadedExecutor another thread takes it and the call
+returns. argv[1]: "single", "multi" (the default group) or "reentrant"."""
 import sys
 import threading
 
@@ -12,7 +13,8 @@ from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, Si
 from rclpy.node import Node
 from std_srvs.srv import SetBool
 
-REENTRANT = len(sys.argv) > 1 and sys.argv[1] == "reentrant"
+MODE = sys.argv[1] if len(sys.argv) > 1 else "single"
+REENTRANT = MODE == "reentrant"
 rclpy.init()
 server = Node("p13_server")
 server.create_service(SetBool, "/p13_switch", lambda request, response: SetBool.Response(success=request.data))
@@ -47,7 +49,7 @@ def tick():
 
 print("wait_for_service ->", client.wait_for_service(timeout_sec=10.0))
 timer = node.create_timer(0.2, tick, callback_group=group)
-executor = MultiThreadedExecutor() if REENTRANT else SingleThreadedExecutor()
+executor = SingleThreadedExecutor() if MODE == "single" else MultiThreadedExecutor()
 executor.add_node(node)
 while not outcome:
     executor.spin_once(timeout_sec=0.1)

@@ -155,9 +155,13 @@ class Executor:
     def _anything_ready(self, condition) -> bool:
         if self._is_shutdown or self._guard_triggered or not self._context.ok() or condition():
             return True
+        # only what may run now: work of a group busy with another callback waits for a worker to finish (which
+        # triggers the executor's guard), else the wait would end at once and spin without yielding
         for node in self._nodes:
-            if any(s.has_message() for s in node._subscriptions) or any(g._triggered for g in node._guards) \
-                    or any(c.has_response() for c in node._clients) or any(s.has_request() for s in node._services):
+            if any(s.has_message() and self.can_execute(s) for s in node._subscriptions) \
+                    or any(g._triggered and self.can_execute(g) for g in node._guards) \
+                    or any(c.has_response() and self.can_execute(c) for c in node._clients) \
+                    or any(s.has_request() and self.can_execute(s) for s in node._services):
                 return True
         return False
 
