@@ -59,7 +59,7 @@ def _served(resolved: str) -> bool:
 
 
 def wait_for_service(service: str, timeout=None) -> None:
-    """Block until the world serves ``service``, looking every 0.3 s of sim time as rospy does.
+    """Block until something serves ``service``, looking every 0.3 s of sim time as rospy does.
 
     ``timeout`` (seconds or Duration; 0 is a ValueError): ROSException once it has passed; ROSInterruptException when
     the node shuts down first.
