@@ -52,10 +52,6 @@ class InterfaceSet:
     def __bool__(self) -> bool:
         return bool(self.types)
 
-    @property
-    def packages(self) -> list[str]:
-        return sorted({name.split("/")[0] for name in self.types})
-
 
 @dataclass
 class _Parsed:
@@ -178,18 +174,16 @@ class _Checker:
     def run(self) -> dict[str, TypeDef]:
         types = {name: typedef for item in self.files for name, typedef in item.types.items()}
         where = {name: item.where for item in self.files for name in item.types}
-        changed = True
-        while changed:
-            changed = False
-            for name in list(types):
-                missing = [ref for ref in _references(types[name]) if ref not in types and ref not in self.builtin]
-                if missing:
-                    self.findings.append(f"{where[name]}: unknown type {_shown(missing[0])}; `colcon build` would "
-                                         f"stop there. Add the package that defines it to the workspace, or fix the "
-                                         f"name.")
-                    self._drop(types, where, name)
-                    changed = True
+        for name in list(types):
+            missing = [ref for ref in _references(types.get(name, ([], []))) if ref not in where
+                       and ref not in self.builtin]
+            if missing:
+                self.findings.append(f"{where[name]}: unknown type {_shown(missing[0])}; `colcon build` would stop "
+                                     "there. Add the package that defines it to the workspace, or fix the name.")
+                self._drop(types, where, name)
+        self._drop_dependents(types, where)  # their own finding names the cause
         self._cycles_and_sizes(types, where)
+        self._drop_dependents(types, where)
         return types
 
     def _drop(self, types: dict[str, TypeDef], where: dict[str, str], name: str) -> None:
@@ -199,48 +193,56 @@ class _Checker:
             del types[other]
 
     def _cycles_and_sizes(self, types: dict[str, TypeDef], where: dict[str, str]) -> None:
+        """Refuses types in a loop, nested too deep or too large: leaves first (Kahn's order, no recursion), so a
+        long chain costs no stack; what is left over after it is in a loop or uses one."""
+        refs = {name: sorted({r for r in _references(typedef) if r in types}) for name, typedef in types.items()}
+        users: dict[str, list[str]] = {name: [] for name in types}
+        for name, used in refs.items():
+            for ref in used:
+                users[ref].append(name)
+        pending = {name: len(used) for name, used in refs.items()}
+        ready = sorted((name for name, count in pending.items() if not count), reverse=True)
         depth: dict[str, int] = {}
         sizes: dict[str, int] = {}
-        state: dict[str, int] = {}  # 1 on the path, 2 done
-
-        def visit(name: str, path: list[str]) -> bool:
-            if state.get(name) == 2:
-                return True
-            if state.get(name) == 1:
-                loop = path[path.index(name):] + [name]
-                self.findings.append(f"{where[name]}: {' -> '.join(_shown(n) for n in loop)} contains itself, so it "
-                                     "would never end; rosidl refuses such a type. Use a sequence of ids instead.")
-                return False
-            state[name] = 1
-            ok = True
-            deepest = 0
-            for ref in _references(types[name]):
-                if ref in types:
-                    ok = visit(ref, path + [name]) and ok
-                    deepest = max(deepest, depth.get(ref, 0) + 1)
-            state[name] = 2
-            if not ok:
-                return False
-            depth[name] = deepest
+        refused: set[str] = set()
+        while ready:
+            name = ready.pop()
+            depth[name] = max((depth[ref] + 1 for ref in refs[name]), default=0)
             sizes[name] = _elements(types[name], sizes)
-            if deepest > MAX_NESTING:
-                self.findings.append(f"{where[name]}: {_shown(name)} nests {deepest} of the submission's types inside "
-                                     f"each other; rosgrade takes at most {MAX_NESTING}.")
-                return False
-            if sizes[name] > MAX_ELEMENTS:
+            if any(ref in refused for ref in refs[name]):
+                refused.add(name)  # the type it uses has the finding
+            elif depth[name] > MAX_NESTING:
+                self.findings.append(f"{where[name]}: {_shown(name)} nests {depth[name]} of the submission's types "
+                                     f"inside each other; rosgrade takes at most {MAX_NESTING}.")
+                refused.add(name)
+            elif sizes[name] > MAX_ELEMENTS:
                 self.findings.append(f"{where[name]}: {_shown(name)} holds {sizes[name]} fixed-size elements; "
                                      f"rosgrade takes at most {MAX_ELEMENTS} in one message. Use a sequence.")
-                return False
-            return True
-
-        bad = [name for name in sorted(types) if not visit(name, [])]
-        for name in bad:
+                refused.add(name)
+            for user in users[name]:
+                pending[user] -= 1
+                if not pending[user]:
+                    ready.append(user)
+        looped = sorted(name for name in types if name not in depth)
+        seen: set[str] = set()
+        for start in looped:
+            path = [start]
+            while True:  # each left-over type uses another left-over one: walk until one repeats
+                following = next(ref for ref in refs[path[-1]] if ref not in depth)
+                if following in path:
+                    loop = path[path.index(following):] + [following]
+                    break
+                path.append(following)
+            if not seen.intersection(loop):
+                self.findings.append(f"{where[loop[0]]}: {' -> '.join(_shown(n) for n in loop)} contains itself, so "
+                                     "it would never end; rosidl refuses such a type. Use a sequence of ids instead.")
+            seen.update(path)
+        for name in sorted(refused | set(looped)):
             if name in types:
                 self._drop(types, where, name)
-        if bad:  # what used a dropped type goes too
-            self.run_again(types, where)
 
-    def run_again(self, types: dict[str, TypeDef], where: dict[str, str]) -> None:
+    def _drop_dependents(self, types: dict[str, TypeDef], where: dict[str, str]) -> None:
+        """Drops, until none is left, the types that use a type that was dropped."""
         changed = True
         while changed:
             changed = False

@@ -7,7 +7,7 @@ import time
 from pathlib import Path
 
 from grader.interfaces import InterfaceSet, catalog_for
-from grader.interfaces.reading import MAX_ELEMENTS, MAX_FIELDS
+from grader.interfaces.reading import MAX_ELEMENTS, MAX_FIELDS, MAX_NESTING, MAX_TYPES
 from tests.interfaces.workspaces import interfaces, package
 
 
@@ -120,3 +120,20 @@ def test_a_ros1_message_that_contains_itself(tmp_path: Path) -> None:
     found = _read_within(tmp_path, flavour="ros1")
     _one(found, "contains itself")
     assert not found.types
+
+
+def test_a_chain_of_types_nested_deeper_than_rosgrade_takes(tmp_path: Path) -> None:
+    files = {f"msg/T{i}.msg": f"T{i + 1} next\n" for i in range(MAX_NESTING + 5)}
+    files[f"msg/T{MAX_NESTING + 5}.msg"] = "int32 end\n"
+    package(tmp_path, "deep_interfaces", files)
+    found = _read_within(tmp_path)
+    assert f"rosgrade takes at most {MAX_NESTING}" in _one(found, f"nests {MAX_NESTING + 1} of the submission's")
+    assert len(found.types) == MAX_NESTING + 1  # T5..T37 nest at most 32 others
+
+
+def test_a_chain_longer_than_the_stack_and_more_files_than_rosgrade_reads(tmp_path: Path) -> None:
+    files = {f"msg/T{i}.msg": f"T{i + 1} next\n" for i in range(MAX_TYPES + 20)}
+    package(tmp_path, "chain_interfaces", files)
+    found = _read_within(tmp_path, seconds=20.0)
+    _one(found, f"more than {MAX_TYPES} interface files")
+    assert not found.types  # the chain's end was never read: every link uses an unknown type in the end
