@@ -231,7 +231,7 @@ CASES = [
         "response False set False",
         "answered within one clock tick True",
         "end",
-    ), stderr_empty=True, volatile=(r"^latency wall ms ",)),
+    ), stderr_empty=True, volatile=(r"^latency wall ms ", r"^discovery wall ms ")),
     Case("p12_service_not_up_yet", "p12_service_not_up_yet.py", stdout=(
         "early call done with no server False",
         "wait_for_service -> True",

@@ -29,7 +29,10 @@ executor.add_node(server)
 while node.get_clock().now().nanoseconds == 0:
     executor.spin_once(timeout_sec=0.01)
 server.create_service(SetBool, "/p11_switch", handle)
+waited, wall = node.get_clock().now().nanoseconds, time.monotonic()
 print("wait_for_service ->", client.wait_for_service(timeout_sec=10.0))
+print("discovery wall ms %.2f sim ms %.1f" % ((time.monotonic() - wall) * 1e3,
+                                              (node.get_clock().now().nanoseconds - waited) / 1e6))
 print("#REF %.6f" % (node.get_clock().now().nanoseconds / 1e9))
 for data in (True, False):
     sent, wall = node.get_clock().now().nanoseconds, time.monotonic()
