@@ -455,8 +455,9 @@ class Session:
         return (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if init is not None and t >= init + self._discovery_ns \
             else 0
 
-    def _hears_world(self, node: _Node, t: int) -> bool:
-        """Whether the world's topics reach the node's subscribers at t (rclpy: from discovery on)."""
+    def _discovered(self, node: _Node, t: int) -> bool:
+        """Whether the node and the others (the world included) know each other at t: rclpy from its DDS discovery
+        on, so nothing reaches its subscribers before; rospy always (the master knows it as it registers)."""
         init = node.link.state.init_ns
         return not self._discovery_ns or (init is not None and t >= init + self._discovery_ns)
 
@@ -508,7 +509,7 @@ class Session:
             encoded = [self._encode(sample) for sample in samples]
             ahead.items += encoded
             deliveries = [(sub.ident, item.data) for item in encoded
-                          if item.to_nodes and self._hears_world(node, item.t_ns)
+                          if item.to_nodes and self._discovered(node, item.t_ns)
                           for sub in _listening(node, item.topic, item.type)]
             if deliveries:
                 ahead.later.append((target, self._clock_ns(node.link, target), deliveries))
@@ -705,7 +706,7 @@ class Session:
         if publisher.topic in self.world.command_topics and publisher.type in self.command_types:
             found.append(ROBOT)
         for index, other in enumerate(self.nodes):
-            if other.alive:
+            if other.alive and self._discovered(other, t):
                 found += [(index, sub.ident) for sub in other.link.state.subscribers.values()
                           if sub.topic == publisher.topic and sub.type == publisher.type and not sub.closed
                           and t >= sub.registered_ns]
@@ -713,8 +714,9 @@ class Session:
 
     def _publishers_of(self, node: _Node, subscriber: Endpoint, t: int) -> set:
         """The peers (the world, or node indexes) whose publishers a node's subscriber is connected to at t."""
-        world = (subscriber.topic, subscriber.type) in self.world_topics and self._hears_world(node, t)
-        peers: set = {ROBOT} if world else set()
+        if not self._discovered(node, t):
+            return set()
+        peers: set = {ROBOT} if (subscriber.topic, subscriber.type) in self.world_topics else set()
         for index, other in enumerate(self.nodes):
             if other.alive and any(pub.topic == subscriber.topic and pub.type == subscriber.type and not pub.closed
                                    and t >= max(self._ready_ns(pub), subscriber.registered_ns)
@@ -868,7 +870,7 @@ class Session:
         world (next batch)."""
         self.world_topics.add((topic, type_name))
         for node in self.nodes:
-            if not node.alive or not self._hears_world(node, t):
+            if not node.alive or not self._discovered(node, t):
                 continue
             for sub in _listening(node, topic, type_name):
                 if queue:
