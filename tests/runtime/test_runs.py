@@ -2,16 +2,16 @@
 from __future__ import annotations
 
 import hashlib
+import multiprocessing
 import os
 import platform
-import multiprocessing
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from grader.recording import Recording
-from grader.runtime import NodeSpec, RunSpec
+from grader.runtime import NodeSpec, RunSpec, cpu_claim
 from grader.runtime.session import run
 from sim import Pose2D, Scenario
 
@@ -170,7 +170,11 @@ def test_run_metadata_records_exit_and_shutdown(tmp_path):
 def cpu_view_log(tmp_path_factory) -> str:
     """The log of one run of a node that prints the CPUs and scheduling policy it sees and the kernel gives it."""
     tmp = tmp_path_factory.mktemp("cpu_view")
-    run_node(tmp, NODES / "cpu_view.py", Scenario(duration=1.0))
+    # CPU claims of its own: other graders on this machine (a parallel test run, a batch) could hold every CPU's
+    # claim, and the run would rightly go unpinned.
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(cpu_claim, "_lock_folder", lambda: tmp)
+        run_node(tmp, NODES / "cpu_view.py", Scenario(duration=1.0))
     return (tmp / "run.log").read_text()
 
 
