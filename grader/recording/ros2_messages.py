@@ -24,8 +24,22 @@ _EXTRA_TYPES = {
     "turtlesim/msg/Color": "uint8 r\nuint8 g\nuint8 b\n",
 }
 
+# The services every rclpy node serves for its parameters (rcl_interfaces/srv, Jazzy), as (request, response).
+RCL_INTERFACES_SERVICES = {
+    "rcl_interfaces/srv/DescribeParameters": ("string[] names", "rcl_interfaces/ParameterDescriptor[] descriptors"),
+    "rcl_interfaces/srv/GetParameterTypes": ("string[] names", "uint8[] types"),
+    "rcl_interfaces/srv/GetParameters": ("string[] names", "rcl_interfaces/ParameterValue[] values"),
+    "rcl_interfaces/srv/ListParameters": ("uint64 DEPTH_RECURSIVE=0\nstring[] prefixes\nuint64 depth",
+                                          "rcl_interfaces/ListParametersResult result"),
+    "rcl_interfaces/srv/SetParameters": ("rcl_interfaces/Parameter[] parameters",
+                                         "rcl_interfaces/SetParametersResult[] results"),
+    "rcl_interfaces/srv/SetParametersAtomically": ("rcl_interfaces/Parameter[] parameters",
+                                                   "rcl_interfaces/SetParametersResult result"),
+}
+
 # Services as (request, response) definitions.
 SERVICES = {
+    **RCL_INTERFACES_SERVICES,
     "std_srvs/srv/Empty": ("", ""),
     "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
     "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),

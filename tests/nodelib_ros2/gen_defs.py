@@ -12,7 +12,7 @@ from rosbags.typesys.base import Nodetype
 from rosbags.typesys.store import Typestore
 
 from grader.interfaces.derived import service_types
-from grader.recording.ros2_messages import rihs01_hasher
+from grader.recording.ros2_messages import RCL_INTERFACES_SERVICES, rihs01_hasher
 
 TARGET = Path(__file__).resolve().parents[2] / "grader" / "nodelib" / "ros2" / "rosgrade_rosidl" / "_defs.py"
 
@@ -26,10 +26,11 @@ DEFAULTS = {
     "rcl_interfaces/msg/ParameterDescriptor": {"read_only": False, "dynamic_typing": False},
 }
 
-# rosbags has no services: std_srvs and example_interfaces' AddTwoInts (the ROS 2 service tutorial's) as (request,
-# response) .msg text, as in their Jazzy .srv files.
+# rosbags has no services: std_srvs, example_interfaces' AddTwoInts (the ROS 2 service tutorial's) and every node's
+# parameter services as (request, response) .msg text, as in their Jazzy .srv files.
 SERVICES = {
     "example_interfaces/srv/AddTwoInts": ("int64 a\nint64 b", "int64 sum"),
+    **RCL_INTERFACES_SERVICES,
     "std_srvs/srv/Empty": ("", ""),
     "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),
     "std_srvs/srv/Trigger": ("", "bool success\nstring message"),

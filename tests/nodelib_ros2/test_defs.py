@@ -26,7 +26,9 @@ def test_hashes_are_rosbags_rihs01():
     assert messages["geometry_msgs/msg/Twist"][2] == (
         "RIHS01_9c45bf16fe0983d80e3cfe750d6835843d265a9a6c46bd2e609fcddde6fb8d2a")
     assert set(services) == {"std_srvs/srv/Empty", "std_srvs/srv/SetBool", "std_srvs/srv/Trigger",
-                             "example_interfaces/srv/AddTwoInts"}
+                             "example_interfaces/srv/AddTwoInts", *(f"rcl_interfaces/srv/{name}" for name in (
+                                 "DescribeParameters", "GetParameterTypes", "GetParameters", "ListParameters",
+                                 "SetParameters", "SetParametersAtomically"))}
     assert all(h.startswith("RIHS01_") and len(h) == 71 for h in services.values())
 
 
