@@ -72,3 +72,48 @@ def test_a_scenario_may_accept_twist_as_humble_does(tmp_path: Path) -> None:
     _, recording = _run(tmp_path, "Twist", command_types=["geometry_msgs/Twist"])
     assert _driven(recording) > 0.3
     assert recording.metadata["rosgrade"]["command_types"] == ["geometry_msgs/msg/Twist"]
+
+
+TALKER = """import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+rclpy.init()
+node = Node("talker")
+pub = node.create_publisher(String, "chatter", 10)
+node.create_timer(0.01, lambda: pub.publish(String(data=str(node.get_clock().now().nanoseconds))))
+rclpy.spin(node)
+"""
+
+LISTENER = """import time
+
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+time.sleep(1.0)  # its first node comes 0.65 s after the talker's
+rclpy.init()
+node = Node("listener")
+heard = []
+node.create_subscription(String, "chatter", lambda msg: heard.append(msg.data), 10)
+while not heard:
+    rclpy.spin_once(node)
+print("first heard", heard[0], "clock", node.get_clock().now().nanoseconds)
+"""
+
+
+def test_a_ros2_node_hears_another_from_its_own_discovery_on(tmp_path: Path) -> None:
+    """Start-up (rclpy.context.STARTUP_NS, session.DISCOVERY_NS): the talker's rclpy.init returns 0.35 s after the
+    start and it publishes from its discovery 0.1 s later; the listener's first node comes at 1 s, and it hears the
+    talker only from its own discovery, 0.1 s after that, when its /clock starts too."""
+    for name, text in (("talker", TALKER), ("listener", LISTENER)):
+        (tmp_path / f"{name}.py").write_text(text)
+    scenario = Scenario(duration=2.0)
+    result = run(RunSpec(scenario=scenario, nodes=tuple(NodeSpec(script=tmp_path / f"{name}.py", flavour="ros2")
+                                                        for name in ("talker", "listener"))),
+                 tmp_path / "chat.mcap", tmp_path / "chat.log")
+    recording = Recording.open(tmp_path / "chat.mcap")
+    printed = [text for _, stream, text, *_ in recording.output_lines() if stream == "stdout"]
+    start = round(scenario.start_time * 1e9)
+    heard = start + 1_100_000_000
+    assert printed == [f"first heard {heard} clock {heard}"], (printed, result.diagnostics)
