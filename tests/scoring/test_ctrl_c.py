@@ -11,6 +11,7 @@ import pytest
 from scoring_synth import Segment, commands, path, run, square_segments
 
 from grader.metrics import OutputLine, RunData, RunInfo
+from grader.metrics.run import ServiceCall
 from grader.metrics.motion import wrap
 from grader.metrics.wall_hits import WARNING
 from grader.report import CriterionResult
@@ -170,6 +171,32 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     shutdown = {(t, c.id) for t in DRIVING_TASKS for c in RUBRICS[t].criteria if c.metric_def.needs_shutdown}
     assert every == {(t, c) for t, c, _ in CRITERIA} | shutdown
     assert {c for _, c in shutdown} == {"shutdown_stop"}
+    assert set(RUBRICS) - set(DRIVING_TASKS) == {"add_two_ints"}  # compared on its own below
+
+
+def _served(ctrl_c: bool) -> dict[str, RunData]:
+    """add_two_ints' server answering the scenario's three calls; with Ctrl+C at the end, a call made after it
+    goes unanswered (the node is shutting down)."""
+    rubric = RUBRICS["add_two_ints"]
+    runs = {}
+    for s in rubric.scenarios:
+        t0, end = s.start_time, s.duration
+        calls = [ServiceCall(t0 + 0.5 * (k + 1), "/add_two_ints", {"a": a, "b": b}, {"sum": a + b})
+                 for k, (a, b) in enumerate([(2, 3), (-7, 4), (4000000000, 1)])]
+        data = run([(end + (AFTER_S if ctrl_c else 0.0), 0.0, 0.0)], t0=t0,
+                   info=RunInfo(shutdown_requested_s=t0 + end if ctrl_c else None), shutdown_at=end if ctrl_c else None)
+        late = [ServiceCall(t0 + end + 0.5, "/add_two_ints", {"a": 1, "b": 1}, None)] if ctrl_c else []
+        runs[s.name] = replace(data, service_calls=tuple(calls + late))
+    return runs
+
+
+@pytest.mark.parametrize("criterion", ["serves", "sums"])
+def test_ctrl_c_after_the_calls_changes_no_service_credit(criterion: str) -> None:
+    rubric = RUBRICS["add_two_ints"]
+    plain, interrupted = (next(c for c in score_task(rubric, _served(ctrl_c)).criteria if c.id == criterion)
+                          for ctrl_c in (False, True))
+    assert plain.score == plain.max_score, plain.feedback
+    assert interrupted.score == plain.score and interrupted.measured["n_calls"] == 3
 
 
 @pytest.mark.parametrize("task, criterion, after", [
