@@ -45,8 +45,9 @@ def odd_values() -> list[tuple[str, str, str, object]]:
 
 
 def _class(short: str) -> type:
-    package, name = short.split("/")
-    return getattr(importlib.import_module(f"{package}.msg"), name)
+    """The class of ``pkg/Name`` (a message) or ``pkg/ns/Name`` (a service's part too)."""
+    package, *namespace, name = short.split("/")
+    return getattr(importlib.import_module(f"{package}.{namespace[0] if namespace else 'msg'}"), name)
 
 
 def _outcome(fn) -> list:
@@ -61,8 +62,7 @@ def _outcome(fn) -> list:
 def real(types: list[str]) -> None:
     from rclpy.serialization import serialize_message  # noqa: PLC0415 - only in the real venv
     for type_name in types:
-        package, _, name = type_name.split("/")
-        cls = _class(f"{package}/{name}")
+        cls = _class(type_name)
         for seed in range(SEEDS):
             msg = fill(random.Random(f"{type_name}:{seed}"), cls())
             print(json.dumps([type_name, seed, serialize_message(msg).hex()]))
@@ -96,8 +96,7 @@ def ours(real_out: str) -> None:
                                                                             bytes.fromhex(data[1])))
             results[f"odd:{seed}"] = "ok" if same else f"real {data}, ours {got}"
             continue
-        package, _, name = key.split("/")
-        cls = _class(f"{package}/{name}")
+        cls = _class(key)
         msg = fill(random.Random(f"{key}:{seed}"), cls())
         mine, theirs = rr.serialize(msg), bytes.fromhex(data)
         if not _matches(mine, theirs):

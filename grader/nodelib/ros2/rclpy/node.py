@@ -20,7 +20,7 @@ from .impl import rcutils_logger
 from .logging import get_logger
 from .parameter import Parameter, ParameterDescriptor, SetParametersResult
 from .publisher import Publisher
-from .qos import QoSProfile, qos_profile_services_default
+from .qos import QoSProfile, qos_profile_parameter_events, qos_profile_services_default
 from .service import Service
 from .subscription import Subscription
 from .time_source import TimeSource
@@ -96,6 +96,9 @@ class Node:
                          signals.get_current_signal_handlers_options() == SignalHandlerOptions.NO)
         if enable_rosout:
             rcutils_logger.rosout_nodes[self._logger.name] = self
+        from rcl_interfaces.msg import ParameterEvent
+        self._parameter_event_publisher = self.create_publisher(ParameterEvent, "/parameter_events",
+                                                                qos_profile_parameter_events)
         self._context.track_node(self)
         if automatically_declare_parameters_from_overrides:
             self.declare_parameters("", [(name, param.value, ParameterDescriptor())
@@ -103,6 +106,18 @@ class Node:
                                     ignore_override=True)
         self._time_source = TimeSource(node=self)
         self._time_source.attach_clock(self._clock)
+        if start_parameter_services:
+            from .parameter_service import ParameterService
+            self._parameter_service = ParameterService(self)
+        self._declare_type_description_parameter()
+
+    def _declare_type_description_parameter(self) -> None:
+        """The read-only parameter by which Jazzy's rclpy starts ``~/get_type_description`` (rosgrade serves no type
+        descriptions: the parameter is there because ``ros2 param list`` shows it on every node)."""
+        if not self.has_parameter("start_type_description_service"):
+            self.declare_parameter("start_type_description_service", True, ParameterDescriptor(
+                name="start_type_description_service", type=Parameter.Type.BOOL.value,
+                description="If enabled, start the ~/get_type_description service.", read_only=True))
 
     # -- identity ---------------------------------------------------------------------------------------------------
     def _remapped_identity(self, node_name: str, namespace: str) -> tuple[str, str]:
@@ -379,6 +394,7 @@ class Node:
                 self._destroy(entities[0], entities)
         if rcutils_logger.rosout_nodes.get(self._logger.name) is self:
             del rcutils_logger.rosout_nodes[self._logger.name]
+        self._parameter_event_publisher = None
         self._time_source.destroy()
         self._destroyed = True
         self._wake_executor()
@@ -561,12 +577,14 @@ class Node:
         for param in parameter_list:
             if not isinstance(param, Parameter):
                 raise TypeError("parameter must be instance of type '{}'".format(repr(Parameter)))
-        for callback in self._pre_set_parameters_callbacks:
-            parameter_list = callback(parameter_list)
-        if not parameter_list:
-            return SetParametersResult(successful=False,
-                                       reason="parameter list cannot be empty, this might be due to "
-                                              "pre_set_parameters_callback modifying the original parameters list.")
+        if self._pre_set_parameters_callbacks:
+            # each callback sees the list as given; what they return together is set
+            parameter_list = [p for callback in self._pre_set_parameters_callbacks for p in callback(parameter_list)]
+            if not parameter_list:
+                return SetParametersResult(successful=False,
+                                           reason="parameter list cannot be empty, this might be due to "
+                                                  "pre_set_parameters_callback modifying the original parameters "
+                                                  "list.")
         if not self._allow_undeclared_parameters:
             undeclared = [p.name for p in parameter_list if p.name not in self._parameters]
             if undeclared:
@@ -581,10 +599,17 @@ class Node:
             return result
         for callback in self._on_set_parameters_callbacks:
             result = callback(parameter_list)
+            if not isinstance(result, SetParametersResult):
+                warnings.warn("Callback returned an invalid type, it should return SetParameterResult.")
+                result = SetParametersResult(successful=False, reason="Callback returned an invalid type")
             if not result.successful:
                 return result
+        from rcl_interfaces.msg import ParameterEvent
+        # the event real rclpy publishes on /parameter_events for each successful set (declarations included)
+        event = ParameterEvent(node=self.get_fully_qualified_name())
         for param in parameter_list:
             if not allow_not_set_type and param.type_ == Parameter.Type.NOT_SET:
+                event.deleted_parameters.append(param.to_parameter_msg())
                 self._parameters.pop(param.name, None)
                 self._descriptors.pop(param.name, None)
                 continue
@@ -592,10 +617,46 @@ class Node:
                 self._descriptors[param.name] = descriptors[param.name]
             elif param.name not in self._descriptors:
                 self._descriptors[param.name] = ParameterDescriptor(dynamic_typing=True)
+            if self.get_parameter_or(param.name).type_ == Parameter.Type.NOT_SET:
+                event.new_parameters.append(param.to_parameter_msg())
+            else:
+                event.changed_parameters.append(param.to_parameter_msg())
             self._parameters[param.name] = param
+        event.stamp = self._clock.now().to_msg()
+        if self._parameter_event_publisher:
+            self._parameter_event_publisher.publish(event)
         for callback in self._post_set_parameters_callbacks:
             callback(parameter_list)
         return SetParametersResult(successful=True)
+
+    def list_parameters(self, prefixes: list[str], depth: int):
+        """The declared names under ``prefixes`` (all: none given) down to ``depth`` levels (0: any), with their
+        prefixes, in declaration order, as ``ros2 param list`` gets them."""
+        from rcl_interfaces.msg import ListParametersResult
+        if not isinstance(prefixes, list):
+            raise TypeError("The prefixes argument must be a list")
+        if not all(isinstance(prefix, str) for prefix in prefixes):
+            raise TypeError("All prefixes must be instances of type str")
+        if not isinstance(depth, int):
+            raise TypeError("The depth must be instance of type int")
+        if depth < 0:
+            raise ValueError("The depth must be greater than or equal to zero")
+        result = ListParametersResult()
+
+        def shallow(name: str) -> bool:
+            return name.count(PARAMETER_SEPARATOR_STRING) < depth
+        recursive = not prefixes and depth == 0  # ListParameters.Request.DEPTH_RECURSIVE
+        for name in self._parameters:
+            if not recursive and not (not prefixes and shallow(name)):
+                if not any(name == prefix or (name.startswith(prefix + PARAMETER_SEPARATOR_STRING)
+                                              and (depth == 0 or shallow(name[len(prefix) + 1:])))
+                           for prefix in prefixes):
+                    continue
+            result.names.append(name)
+            separator = name.rfind(PARAMETER_SEPARATOR_STRING)
+            if separator != -1 and name[:separator] not in result.prefixes:
+                result.prefixes.append(name[:separator])
+        return result
 
     def _apply_descriptors(self, parameter_list, descriptors, check_read_only: bool) -> SetParametersResult:
         for param in parameter_list:

@@ -30,6 +30,11 @@ except ImportError:  # the message packages of this tree may not carry rcl_inter
             return f"rcl_interfaces.msg.SetParametersResult(successful={self.successful}, reason='{self.reason}')"
 
 
+# rcl_interfaces/msg/ParameterValue's field for each Parameter.Type
+_VALUE_FIELDS = {1: "bool_value", 2: "integer_value", 3: "double_value", 4: "string_value", 5: "byte_array_value",
+                 6: "bool_array_value", 7: "integer_array_value", 8: "double_array_value", 9: "string_array_value"}
+
+
 class Parameter:
     class Type(IntEnum):
         NOT_SET = 0
@@ -69,8 +74,15 @@ class Parameter:
                 kind = Parameter.Type.from_parameter_value(parameter_value)
             except TypeError:
                 return False
-            return kind == self or (isinstance(parameter_value, (list, tuple)) and not parameter_value
+            return kind == self or (isinstance(parameter_value, (list, tuple, array.array)) and not parameter_value
                                     and self >= Parameter.Type.BYTE_ARRAY)
+
+    @classmethod
+    def from_parameter_msg(cls, param_msg) -> Parameter:
+        """The Parameter an rcl_interfaces/msg/Parameter carries (a set_parameters request's)."""
+        type_ = Parameter.Type(param_msg.value.type)
+        field = _VALUE_FIELDS.get(int(type_))
+        return cls(param_msg.name, type_, None if field is None else getattr(param_msg.value, field))
 
     def __init__(self, name: str, type_: Type | None = None, value=None) -> None:
         if type_ is None:
@@ -98,9 +110,7 @@ class Parameter:
     def get_parameter_value(self):
         from rcl_interfaces.msg import ParameterValue
         value = ParameterValue(type=self.type_.value)
-        field = {1: "bool_value", 2: "integer_value", 3: "double_value", 4: "string_value",
-                 5: "byte_array_value", 6: "bool_array_value", 7: "integer_array_value",
-                 8: "double_array_value", 9: "string_array_value"}.get(int(self.type_))
+        field = _VALUE_FIELDS.get(int(self.type_))
         if field is not None:
             setattr(value, field, self.value)
         return value
@@ -114,9 +124,7 @@ class Parameter:
 
 
 def parameter_value_to_python(parameter_value):
-    field = {1: "bool_value", 2: "integer_value", 3: "double_value", 4: "string_value",
-             5: "byte_array_value", 6: "bool_array_value", 7: "integer_array_value",
-             8: "double_array_value", 9: "string_array_value"}.get(parameter_value.type)
+    field = _VALUE_FIELDS.get(parameter_value.type)
     if parameter_value.type == 0:
         return None
     if field is None:

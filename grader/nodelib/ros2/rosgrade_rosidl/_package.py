@@ -13,8 +13,13 @@ def lazy_module(module_name: str) -> tuple[Callable[[str], Any], Callable[[], li
     package, namespace = module_name.split(".")
     prefix = f"{package}/{namespace}/"
     if namespace == "srv":
-        names = sorted(n[len(prefix):] for n in SERVICES if n.startswith(prefix))
-        build = service_class
+        services = [n[len(prefix):] for n in SERVICES if n.startswith(prefix)]
+        # rosidl_generator_py's srv module names each service's parts too (SetParameters_Request, ...)
+        parts = [f"{n}_{part}" for n in services for part in ("Event", "Request", "Response")]
+        names = sorted(services + parts)
+
+        def build(type_name: str) -> Any:
+            return message_class(type_name) if type_name.rsplit("/", 1)[1] in parts else service_class(type_name)
     elif namespace == "action":
         names = sorted(n[len(prefix):] for n in ACTIONS if n.startswith(prefix))
         build = action_class
