@@ -6,7 +6,8 @@ from __future__ import annotations
 
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, JsonValue, field_validator, model_validator
+from pydantic import (BaseModel, ConfigDict, Field, JsonValue, StrictBool, StrictFloat, StrictInt, StrictStr,
+                      field_validator, model_validator)
 
 from sim.clock import seconds_to_ns
 from sim.profile import ProfileError, load_robot
@@ -120,6 +121,26 @@ class ServiceCallSpec(_Model):
         return seconds_to_ns(self.t)
 
 
+class ParamSetSpec(_Model):
+    """A parameter the grader sets on a ROS 2 node at ``t`` seconds after the start, as ``ros2 param set <node> <name>
+    <value>`` would: one call to the node's ``<node>/set_parameters`` (rcl_interfaces/srv/SetParameters), in the
+    script of ``service_calls``. ``value``'s type is the parameter's, as the command line's YAML reads it: ``1.2`` a
+    double, ``1`` an integer (which a double parameter refuses), ``true`` a bool, ``"x"`` a string, or a list of one
+    of them."""
+
+    t: NonNegative
+    node: Annotated[str, Field(pattern=r"^/[A-Za-z0-9_/]+$")]
+    name: Annotated[str, Field(pattern=r"^[A-Za-z_][A-Za-z0-9_./]*$")]
+    value: Union[StrictBool, StrictInt, StrictFloat, StrictStr,
+                 Annotated[list[StrictBool], Field(min_length=1)], Annotated[list[StrictInt], Field(min_length=1)],
+                 Annotated[list[StrictFloat], Field(min_length=1)], Annotated[list[StrictStr], Field(min_length=1)]]
+
+    @property
+    def t_ns(self) -> int:
+        """``t`` in integer nanoseconds (relative to the start)."""
+        return seconds_to_ns(self.t)
+
+
 class Scenario(_Model):
     """One run: the world starts at ``start_time`` (it has been running since 0) and lasts ``duration`` seconds after it."""
 
@@ -137,6 +158,8 @@ class Scenario(_Model):
     obstacles: list[Obstacle] = Field(default_factory=list, description="fixed walls and pillars (empty: an open floor)")
     service_calls: list[ServiceCallSpec] = Field(default_factory=list,
                                                  description="service calls the grader makes, in time order")
+    param_sets: list[ParamSetSpec] = Field(default_factory=list,
+                                           description="ROS 2 parameters the grader sets, in time order")
     command_types: list[str] | None = Field(
         None, description="velocity command types the robot's base takes, e.g. ['geometry_msgs/Twist', "
         "'geometry_msgs/TwistStamped']; None: what the run's client library's robot takes (ROS 1: Twist; "
@@ -160,9 +183,10 @@ class Scenario(_Model):
         for i, (earlier, later) in enumerate(zip(times, times[1:]), start=1):
             if later < earlier:
                 raise ValueError(f"script[{i}].t = {later} s comes before script[{i - 1}].t = {earlier} s; expected times in order")
-        calls = [call.t for call in self.service_calls]
-        if calls != sorted(calls) or (calls and calls[-1] > self.duration):
-            raise ValueError("service_calls must come in time order, within the run's duration")
+        for field_name in ("service_calls", "param_sets"):
+            calls = [call.t for call in getattr(self, field_name)]
+            if calls != sorted(calls) or (calls and calls[-1] > self.duration):
+                raise ValueError(f"{field_name} must come in time order, within the run's duration")
         if times and times[-1] > self.duration:
             raise ValueError(f"script[{len(times) - 1}].t = {times[-1]} s is after the end of the run (duration {self.duration} s)")
         return self

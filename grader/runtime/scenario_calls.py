@@ -1,18 +1,26 @@
-"""The grader as a caller: a scenario's service calls, made at their sim times through the run's service routing,
-one after the other, as a script of ``ros2 service call`` commands would make them."""
+"""The grader as a caller: a scenario's service calls and parameter sets, made at their sim times through the run's
+service routing, one after the other, as a script of ``ros2 service call`` and ``ros2 param set`` commands would."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+
+import numpy as np
 
 from grader.recording import RecordingError
 from grader.runtime.node_link import ServiceCall
 from grader.runtime.services import Caller, ServiceRouteError, ServiceRouter
 from grader.runtime.wire import Wire
-from sim.scenario import ServiceCallSpec
+from sim.scenario import ParamSetSpec, ServiceCallSpec
 
 # The grader's name on the graph (``ros2 service call`` is a node of its own too); names under /rosgrade are refused
 # to student nodes, so scoring can trust what this name called.
 CALLER_ID = "/rosgrade"
+SET_PARAMETERS = "rcl_interfaces/srv/SetParameters"
+# rcl_interfaces/msg/ParameterType and the ParameterValue field of each Python type ``ros2 param set`` reads a value as
+_PARAMETER_TYPES = {bool: (1, "bool_value"), int: (2, "integer_value"), float: (3, "double_value"),
+                    str: (4, "string_value")}
+_ARRAY_TYPES = {bool: (6, "bool_array_value", bool), int: (7, "integer_array_value", np.int64),
+                float: (8, "double_array_value", np.float64), str: (9, "string_array_value", None)}
 
 
 @dataclass(frozen=True)
@@ -23,8 +31,9 @@ class PlannedCall:
     call: ServiceCall
 
 
-def planned_calls(calls: list[ServiceCallSpec], wire: Wire) -> list[PlannedCall]:
-    """The scenario's calls encoded for the run's wire; ServiceRouteError names a call that cannot be made."""
+def planned_calls(calls: list[ServiceCallSpec], wire: Wire, param_sets: list[ParamSetSpec] = ()) -> list[PlannedCall]:
+    """The scenario's calls and parameter sets encoded for the run's wire, in time order (a call before a set at the
+    same time); ServiceRouteError names one that cannot be made."""
     planned = []
     for index, spec in enumerate(calls):
         try:
@@ -34,7 +43,35 @@ def planned_calls(calls: list[ServiceCallSpec], wire: Wire) -> list[PlannedCall]
             raise ServiceRouteError(f"scenario service_calls[{index}] to {spec.service}: {spec.request} is not a "
                                     f"request of {spec.type}: {exc}") from None
         planned.append(PlannedCall(spec.t_ns, ServiceCall(spec.service, spec.type, md5sum, False, request)))
-    return planned
+    for index, param in enumerate(param_sets):
+        service = f"{param.node.rstrip('/')}/set_parameters"
+        try:
+            request = _set_parameters_request(wire, param)
+            md5sum = wire.catalog.service_md5sum(SET_PARAMETERS)
+        except RecordingError:
+            raise ServiceRouteError(f"scenario param_sets[{index}] ({param.node} {param.name}): parameters are set "
+                                    "through a ROS 2 node's parameter services; this run's nodes are ROS 1") from None
+        planned.append(PlannedCall(param.t_ns, ServiceCall(service, SET_PARAMETERS, md5sum, False, request)))
+    return sorted(planned, key=lambda call: call.t_ns)
+
+
+def _set_parameters_request(wire: Wire, param: ParamSetSpec) -> bytes:
+    """The SetParameters request ``ros2 param set`` sends: one Parameter, its value typed as YAML reads it."""
+    catalog = wire.catalog
+    value_class = catalog.message_class("rcl_interfaces/msg/ParameterValue")
+    fields = {"type": 0, "bool_value": False, "integer_value": 0, "double_value": 0.0, "string_value": "",
+              "byte_array_value": np.array([], dtype=np.uint8), "bool_array_value": np.array([], dtype=bool),
+              "integer_array_value": np.array([], dtype=np.int64),
+              "double_array_value": np.array([], dtype=np.float64), "string_array_value": []}
+    if isinstance(param.value, list):
+        kind, field, dtype = _ARRAY_TYPES[type(param.value[0])]
+        fields.update(type=kind, **{field: list(param.value) if dtype is None else np.array(param.value, dtype)})
+    else:
+        kind, field = _PARAMETER_TYPES[type(param.value)]
+        fields.update(type=kind, **{field: param.value})
+    parameter = catalog.message_class("rcl_interfaces/msg/Parameter")(name=param.name, value=value_class(**fields))
+    request_type = wire.service_part(SET_PARAMETERS, "Request")
+    return catalog.encode(request_type, catalog.message_class(request_type)(parameters=[parameter]))
 
 
 class ScenarioCaller:

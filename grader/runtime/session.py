@@ -192,7 +192,7 @@ class Session:
         self.services: ServiceRouter | None = None  # who serves what, and the calls in flight (grader/runtime/services)
         self.caller: ScenarioCaller | None = None  # the scenario's own service calls
         try:
-            self._calls = planned_calls(spec.scenario.service_calls, self.wire)
+            self._calls = planned_calls(spec.scenario.service_calls, self.wire, spec.scenario.param_sets)
         except ServiceRouteError as exc:
             raise RunError(str(exc)) from None
 
