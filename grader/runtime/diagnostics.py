@@ -75,8 +75,10 @@ def _endpoint_notes(session: Session, node: _Node, command_topics: tuple[str, ..
               and robot_received == 0):
             notes.append(f"Your node published {_count(pub.count, 'message')} on {pub.topic}; this robot "
                          f"listens on {' or '.join(command_topics)}.")
-        # Only worth saying when it cost the student something: a loop that publishes on loses nothing that matters.
-        if pub.dropped_before_connect and pub.count - pub.dropped_before_connect < 3:
+        # Only worth saying when it cost the student something: a loop that publishes on loses nothing that matters,
+        # nor does rclpy's own /parameter_events publisher, whose declarations go out before discovery in every node.
+        if (pub.dropped_before_connect and pub.count - pub.dropped_before_connect < 3
+                and pub.topic != "/parameter_events"):
             notes.append(
                 f"{_count(pub.dropped_before_connect, 'message')} on {pub.topic} went out in the first "
                 f"{_CONNECT_MS} ms after the publisher was created, before the robot had connected, and were "

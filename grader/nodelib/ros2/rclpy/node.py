@@ -585,10 +585,10 @@ class Node:
                                            reason="parameter list cannot be empty, this might be due to "
                                                   "pre_set_parameters_callback modifying the original parameters "
                                                   "list.")
-        if not self._allow_undeclared_parameters:
-            undeclared = [p.name for p in parameter_list if p.name not in self._parameters]
-            if undeclared:
-                raise ParameterNotDeclaredException(undeclared)
+        # real rclpy tests a generator with any() and then lists what any() left of it: the names after the first
+        undeclared = (p.name for p in parameter_list if p.name not in self._parameters)
+        if not self._allow_undeclared_parameters and any(undeclared):
+            raise ParameterNotDeclaredException(list(undeclared))
         return self._set_parameters_atomically_common(parameter_list)
 
     def _set_parameters_atomically_common(self, parameter_list, descriptors=None,
