@@ -62,6 +62,11 @@ def diagnose(session: Session) -> list[str]:
     return notes
 
 
+# What a client library publishes on its own in every node (rclpy's parameter events, whose declarations go out
+# before discovery): nothing the student did, so no finding or summary line names it.
+LIBRARY_TOPICS = frozenset({"/parameter_events"})
+
+
 def _endpoint_notes(session: Session, node: _Node, command_topics: tuple[str, ...], world_topics: dict[str, str],
                     robot_received: int) -> list[str]:
     """Findings about one node's publishers and subscribers: wrong types or topics, messages lost at the start."""
@@ -75,10 +80,9 @@ def _endpoint_notes(session: Session, node: _Node, command_topics: tuple[str, ..
               and robot_received == 0):
             notes.append(f"Your node published {_count(pub.count, 'message')} on {pub.topic}; this robot "
                          f"listens on {' or '.join(command_topics)}.")
-        # Only worth saying when it cost the student something: a loop that publishes on loses nothing that matters,
-        # nor does rclpy's own /parameter_events publisher, whose declarations go out before discovery in every node.
+        # Only worth saying when it cost the student something: a loop that publishes on loses nothing that matters.
         if (pub.dropped_before_connect and pub.count - pub.dropped_before_connect < 3
-                and pub.topic != "/parameter_events"):
+                and pub.topic not in LIBRARY_TOPICS):
             notes.append(
                 f"{_count(pub.dropped_before_connect, 'message')} on {pub.topic} went out in the first "
                 f"{_CONNECT_MS} ms after the publisher was created, before the robot had connected, and were "
@@ -103,7 +107,7 @@ def topic_summary(session: Session) -> list[str]:
         label = node.outcome.script
         state = node.link.state
         lines += _capped([f"{label} published {_count(p.count, 'message')} on {p.topic} ({p.type})."
-                          for p in state.publishers.values()]
+                          for p in state.publishers.values() if p.topic not in LIBRARY_TOPICS]
                          + [f"{label} received {_count(s.count, 'message')} on {s.topic} ({s.type})."
                             for s in state.subscribers.values()], f"publishers and subscribers of {label}")
     return lines
