@@ -254,19 +254,20 @@ CASES = [
         "call returned success True",
         "end",
     ), stderr_empty=True),
-    # Parameters at run time (issue 28): what `ros2 param set` gets back, accepted and refused, and the event.
+    # Parameters at run time (issue 28): what `ros2 param set` gets back, accepted (a pre-set callback adding to the
+    # set) and refused, and the event.
     Case("p14_parameters", "p14_parameters.py", duration=8.0, stdout=(
         "services ['/p14_parameters/describe_parameters', '/p14_parameters/get_parameter_types', "
         "'/p14_parameters/get_parameters', '/p14_parameters/list_parameters', '/p14_parameters/set_parameters', "
         "'/p14_parameters/set_parameters_atomically']",
         "wait_for_service True",
-        "post-set [('radius', 1.2)]",
+        "post-set [('radius', 1.2), ('diameter', 2.4)]",
         "set radius 1.2 -> [(True, '')]",
         "radius now 1.2",
         "events 1",
         "event node /p14_parameters",
         "event new [] deleted []",
-        "event changed [('radius', 3, 1.2)]",
+        "event changed [('radius', 3, 1.2), ('diameter', 3, 2.4)]",
         "event stamped with sim time within 0.4 s before now True",
         "set radius -1.0 -> [(False, 'radius must be positive')]",
         "set radius 1 -> [(False, \"Wrong parameter type, expected '3' got '2'\")]",
@@ -274,10 +275,10 @@ CASES = [
         "set atomically with two undeclared names !! ParameterNotDeclaredException Invalid access to undeclared "
         "parameter(s): ['b', 'c']",
         "radius now 1.2 events 1",
-        "get [(3, 1.2, False), (1, 0.0, True)]",
+        "get [(3, 1.2, False), (3, 2.4, False), (1, 0.0, True)]",
         "get with an undeclared name []",
         "describe [('radius', 3, False, False), ('start_type_description_service', 1, True, False)]",
-        "list ['use_sim_time', 'start_type_description_service', 'radius'] []",
+        "list ['use_sim_time', 'start_type_description_service', 'radius', 'diameter'] []",
         "local set [(False, 'radius must be positive')]",
         "events after undeclare 1",
         "end",

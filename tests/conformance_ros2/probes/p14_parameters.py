@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Probe 14: parameters at run time through the node's parameter services, as ``ros2 param set`` reaches them: a
-set accepted (and its /parameter_events message), one refused by an on-set callback (its reason reaches the setter,
-and no event), a value of the wrong type, an undeclared name; get/describe/list, and the services the node serves.
+set accepted (and its /parameter_events message), a pre-set callback adding a parameter to the set, one refused by
+an on-set callback (its reason reaches the setter, and no event), a value of the wrong type, an undeclared name;
+get/describe/list, and the services the node serves.
 
 rosgrade does not serve ``~/get_type_description`` (type_description_interfaces is not in its catalog), so the
 services are printed without it; the parameter that starts it is listed like any other.
@@ -22,9 +23,16 @@ def refuse_negative(params):
     return SetParametersResult(successful=True)
 
 
+def with_diameter(params):
+    return params + [Parameter("diameter", value=2.0 * p.value) for p in params
+                     if p.name == "radius" and isinstance(p.value, float)]
+
+
 rclpy.init()
 node = Node("p14_parameters")
 node.declare_parameter("radius", 0.5)
+node.declare_parameter("diameter", 1.0)
+node.add_pre_set_parameters_callback(with_diameter)
 node.add_on_set_parameters_callback(refuse_negative)
 node.add_post_set_parameters_callback(lambda params: print("post-set", [(p.name, p.value) for p in params]))
 setter = Node("p14_setter")
@@ -83,7 +91,7 @@ try:
 except Exception as exc:
     print(type(exc).__name__, exc)
 print("radius now", node.get_parameter("radius").value, "events", len(events))
-values = call(GetParameters, GetParameters.Request(names=["radius", "use_sim_time"])).values
+values = call(GetParameters, GetParameters.Request(names=["radius", "diameter", "use_sim_time"])).values
 print("get", [(v.type, v.double_value, v.bool_value) for v in values])
 print("get with an undeclared name", list(call(GetParameters, GetParameters.Request(names=["radius", "x"])).values))
 descriptors = call(DescribeParameters, DescribeParameters.Request(
