@@ -277,6 +277,8 @@ CASES = [
         "radius now 1.2 events 1",
         "get [(3, 1.2, False), (3, 2.4, False), (1, 0.0, True)]",
         "get with an undeclared name []",
+        "types [3, 1] []",
+        "get_parameter_type 3",
         "describe [('radius', 3, False, False), ('start_type_description_service', 1, True, False)]",
         "list ['use_sim_time', 'start_type_description_service', 'radius', 'diameter'] []",
         "local set [(False, 'radius must be positive')]",

@@ -9,7 +9,7 @@ services are printed without it; the parameter that starts it is listed like any
 """
 import rclpy
 from rcl_interfaces.msg import ParameterEvent, SetParametersResult
-from rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters, SetParameters
+from rcl_interfaces.srv import DescribeParameters, GetParameters, GetParameterTypes, ListParameters, SetParameters
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -45,7 +45,8 @@ print("services", sorted(s.service_name for s in node.services
                          if not s.service_name.endswith("/get_type_description")))
 clients = {srv_type: setter.create_client(srv_type, f"/p14_parameters/{name}") for srv_type, name in (
     (SetParameters, "set_parameters"), (GetParameters, "get_parameters"),
-    (DescribeParameters, "describe_parameters"), (ListParameters, "list_parameters"))}
+    (DescribeParameters, "describe_parameters"), (ListParameters, "list_parameters"),
+    (GetParameterTypes, "get_parameter_types"))}
 print("wait_for_service", all(client.wait_for_service(timeout_sec=10.0) for client in clients.values()))
 for _ in range(2000):  # the event subscription matched (DDS discovery), and sim time running
     if node._parameter_event_publisher.get_subscription_count() and node.get_clock().now().nanoseconds:
@@ -94,6 +95,9 @@ print("radius now", node.get_parameter("radius").value, "events", len(events))
 values = call(GetParameters, GetParameters.Request(names=["radius", "diameter", "use_sim_time"])).values
 print("get", [(v.type, v.double_value, v.bool_value) for v in values])
 print("get with an undeclared name", list(call(GetParameters, GetParameters.Request(names=["radius", "x"])).values))
+print("types", list(call(GetParameterTypes, GetParameterTypes.Request(names=["radius", "use_sim_time"])).types),
+      list(call(GetParameterTypes, GetParameterTypes.Request(names=["radius", "x"])).types))
+print("get_parameter_type", repr(node.get_parameter_type("radius")))
 descriptors = call(DescribeParameters, DescribeParameters.Request(
     names=["radius", "start_type_description_service"])).descriptors
 print("describe", [(d.name, d.type, d.read_only, d.dynamic_typing) for d in descriptors])

@@ -551,13 +551,19 @@ class Node:
             prefix = prefix + PARAMETER_SEPARATOR_STRING
         return {name[len(prefix):]: value for name, value in self._parameters.items() if name.startswith(prefix)}
 
-    def get_parameter_type(self, name: str) -> Parameter.Type:
-        if not self.has_parameter(name):
-            raise ParameterNotDeclaredException(name)
-        return self._parameters[name].type_
+    def get_parameter_type(self, name: str):
+        """The declared parameter's type as an int, as real rclpy returns it (NOT_SET when undeclared ones are
+        allowed)."""
+        if self.has_parameter(name):
+            return self._parameters[name].type_.value
+        if self._allow_undeclared_parameters:
+            return Parameter.Type.NOT_SET
+        raise ParameterNotDeclaredException(name)
 
-    def get_parameter_types(self, names_: list[str]) -> list[Parameter.Type]:
-        return [self._parameters[n].type_ if n in self._parameters else Parameter.Type.NOT_SET for n in names_]
+    def get_parameter_types(self, names_: list[str]) -> list:
+        if not all(isinstance(n, str) for n in names_):
+            raise TypeError("All names must be instances of type str")
+        return [self.get_parameter_type(n) for n in names_]
 
     def describe_parameter(self, name: str) -> ParameterDescriptor:
         try:
