@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from grader.metrics import exact
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
 from grader.metrics.motion import first_motion, path_length
 from grader.metrics.run import Commands, RunData
@@ -45,7 +46,7 @@ def fit_circle(x: np.ndarray, y: np.ndarray, iterations: int = 30) -> CircleFit:
     if len(x) < 5:
         raise MetricError("too few positions to fit a circle (need at least 5)")
     # Centre the data: keeps the normal equations well conditioned far from the origin.
-    mx, my = float(np.mean(x)), float(np.mean(y))
+    mx, my = exact.mean(x), exact.mean(y)
     u, v = x - mx, y - my
     w = np.ones_like(u)
     cx, cy, r = _algebraic(u, v, w)
@@ -65,7 +66,7 @@ def fit_circle(x: np.ndarray, y: np.ndarray, iterations: int = 30) -> CircleFit:
     angles = np.unwrap(np.arctan2(v - cy, u - cx))
     return CircleFit(
         cx=float(cx + mx), cy=float(cy + my), radius=float(abs(r)),
-        rms=float(np.sqrt(np.mean((d - abs(r)) ** 2))),
+        rms=math.sqrt(exact.mean((d - abs(r)) ** 2)),
         revolutions=float(abs(angles[-1] - angles[0]) / (2.0 * math.pi)),
     )
 

@@ -13,6 +13,7 @@ from typing import Literal
 import numpy as np
 
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
+from grader.metrics import exact
 from grader.metrics.circle import fit_circle
 from grader.metrics.motion import moving, path_length
 from grader.metrics.run import RunData, Trajectory
@@ -115,7 +116,7 @@ def measure(run: RunData, params: Params) -> Measurement:
         # Loops missing from the expected number count as wholly wrong: one loop can't look like a figure of eight.
         "diameter_worst_error": (max(errors) if len(loops) >= len(expected) else target) if errors else math.nan,
         "closure_worst": _stat([loop.closure for loop in loops], "max"),
-        "turned_deg": float(np.degrees(np.sum(np.abs(np.diff(np.unwrap(window.yaw)))))),
+        "turned_deg": math.degrees(exact.total(np.abs(np.diff(np.unwrap(window.yaw))))),
         "loops_s": float(loops[-1].end_s - loops[0].start_s) if loops else math.nan,
     }
 

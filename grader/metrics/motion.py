@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from grader.metrics import exact
 from grader.metrics.run import Trajectory
 
 
@@ -21,7 +22,7 @@ def speeds(traj: Trajectory) -> tuple[np.ndarray, np.ndarray]:
 
 def path_length(traj: Trajectory) -> float:
     """Distance travelled along the path (m)."""
-    return float(np.sum(np.hypot(np.diff(traj.x), np.diff(traj.y)))) if len(traj) > 1 else 0.0
+    return exact.total(np.hypot(np.diff(traj.x), np.diff(traj.y))) if len(traj) > 1 else 0.0
 
 
 def moving(traj: Trajectory, rest_speed: float, rest_turn_rate: float) -> np.ndarray:

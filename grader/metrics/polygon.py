@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from grader.metrics import exact
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
 from grader.metrics.motion import speeds, wrap
 from grader.metrics.run import RunData, Trajectory
@@ -49,13 +50,13 @@ def measure(run: RunData, params: Params) -> Measurement:
     lengths = np.array([math.hypot(traj.x[b] - traj.x[a], traj.y[b] - traj.y[a]) for a, b in runs])
     headings = np.array([math.atan2(traj.y[b] - traj.y[a], traj.x[b] - traj.x[a]) for a, b in runs])
     turns = np.degrees(np.abs(wrap(np.diff(headings))))
-    mean = float(lengths.mean())
+    mean = exact.mean(lengths)
     closure = math.hypot(traj.x[runs[-1][1]] - traj.x[runs[0][0]], traj.y[runs[-1][1]] - traj.y[runs[0][0]])
     return {
         "n_sides": len(runs),
         "side_mean": mean, "side_min": float(lengths.min()), "side_max": float(lengths.max()),
         "side_spread_rel": float(lengths.max() - lengths.min()) / mean,
-        "turn_mean_deg": float(turns.mean()),
+        "turn_mean_deg": exact.mean(turns),
         "turn_worst_error_deg": float(np.max(np.abs(turns - params.turn_deg))),
         "turn_deg": params.turn_deg,
         "closure": closure,

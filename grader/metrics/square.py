@@ -8,6 +8,7 @@ from typing import Literal
 import numpy as np
 
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
+from grader.metrics import exact
 from grader.metrics.motion import moving, path_length, rest_since, speeds
 from grader.metrics.run import RunData, Trajectory
 
@@ -98,7 +99,7 @@ def analyse_square(
     ]
     return SquareAnalysis(
         points=points, sides=sides, corners_deg=[math.degrees(t[2]) for t in turns], closures=closures,
-        pauses=pauses, heading_turns=float(abs(np.sum(w * np.diff(traj.t))) / (2.0 * math.pi)),
+        pauses=pauses, heading_turns=abs(exact.total(w * np.diff(traj.t))) / (2.0 * math.pi),
         rest_s=None if rest_from is None else float(traj.t[-1] - rest_from),
     )
 
