@@ -1,5 +1,6 @@
 """The grader as a caller: a scenario's service calls and parameter sets, made at their sim times through the run's
-service routing, one after the other, as a script of ``ros2 service call`` and ``ros2 param set`` commands would."""
+service routing, one after the other, as a script of ``ros2 service call`` and ``ros2 param set`` commands would (for
+ROS 1 nodes a set is ``rosparam set`` on the run's parameter server, which the node reads again when it asks)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -8,6 +9,7 @@ import numpy as np
 
 from grader.recording import RecordingError
 from grader.runtime.node_link import ServiceCall
+from grader.runtime.param_server import GRADER, ParamServer
 from grader.runtime.services import Caller, ServiceRouteError, ServiceRouter
 from grader.runtime.wire import Wire
 from sim.scenario import ParamSetSpec, ServiceCallSpec
@@ -25,10 +27,12 @@ _ARRAY_TYPES = {bool: (6, "bool_array_value", bool), int: (7, "integer_array_val
 
 @dataclass(frozen=True)
 class PlannedCall:
-    """A scenario's call with its request's bytes and its srv type's md5sum (RIHS01), built before the run starts."""
+    """A scenario's call with its request's bytes and its srv type's md5sum (RIHS01), built before the run starts;
+    or, for ROS 1 nodes, a ``rosparam set`` (``param``: the absolute name and the value)."""
 
     t_ns: int  # relative to the start
-    call: ServiceCall
+    call: ServiceCall | None
+    param: tuple[str, object] | None = None
 
 
 def planned_calls(calls: list[ServiceCallSpec], wire: Wire, param_sets: list[ParamSetSpec] = ()) -> list[PlannedCall]:
@@ -44,13 +48,16 @@ def planned_calls(calls: list[ServiceCallSpec], wire: Wire, param_sets: list[Par
                                     f"request of {spec.type}: {exc}") from None
         planned.append(PlannedCall(spec.t_ns, ServiceCall(spec.service, spec.type, md5sum, False, request)))
     for index, param in enumerate(param_sets):
+        if wire.name == "ros1":  # `rosparam set /node/name value`: the node's private parameter
+            name = f"{param.node.rstrip('/')}/{param.name.replace('.', '/')}"
+            planned.append(PlannedCall(param.t_ns, None, (name, param.value)))
+            continue
         service = f"{param.node.rstrip('/')}/set_parameters"
         try:
             request = _set_parameters_request(wire, param)
             md5sum = wire.catalog.service_md5sum(SET_PARAMETERS)
-        except RecordingError:
-            raise ServiceRouteError(f"scenario param_sets[{index}] ({param.node} {param.name}): parameters are set "
-                                    "through a ROS 2 node's parameter services; this run's nodes are ROS 1") from None
+        except RecordingError as exc:
+            raise ServiceRouteError(f"scenario param_sets[{index}] ({param.node} {param.name}): {exc}") from None
         planned.append(PlannedCall(param.t_ns, ServiceCall(service, SET_PARAMETERS, md5sum, False, request)))
     return sorted(planned, key=lambda call: call.t_ns)
 
@@ -79,8 +86,10 @@ class ScenarioCaller:
     offered yet waits for it (``ros2 service call`` prints "waiting for service to become available..." meanwhile)
     and goes out when a node offers it."""
 
-    def __init__(self, calls: list[PlannedCall], start_ns: int, router: ServiceRouter) -> None:
-        self._calls = [(start_ns + planned.t_ns, planned.call) for planned in calls]
+    def __init__(self, calls: list[PlannedCall], start_ns: int, router: ServiceRouter,
+                 params: ParamServer | None = None) -> None:
+        self._calls = [(start_ns + planned.t_ns, planned) for planned in calls]
+        self._params = params
         self._next = 0
         self._busy = False  # a call is out and not answered yet
         self._router = router
@@ -90,18 +99,24 @@ class ScenarioCaller:
         """When the loop must stop for the next call (None: none, or it waits for an answer or a server)."""
         if self._busy or self._next >= len(self._calls):
             return None
-        due, call = self._calls[self._next]
-        return due if self._router.server(call.service) is not None else None
+        due, planned = self._calls[self._next]
+        return due if planned.param is not None or self._router.server(planned.call.service) is not None else None
 
     def tick(self, t: int) -> None:
-        """Make the next call if it is due at t and its service is offered."""
-        if self._busy or self._next >= len(self._calls):
-            return
-        due, call = self._calls[self._next]
-        if due > t or self._router.server(call.service) is None:
-            return
-        self._busy = True
-        self._router.call(Caller(CALLER_ID, "grader", done=self._answered), call, t)
+        """Make the next call if it is due at t and its service is offered; a ROS 1 set is made at once (it reaches
+        each node in its next BATCH), and what follows it may go out at t too."""
+        while not self._busy and self._next < len(self._calls):
+            due, planned = self._calls[self._next]
+            if due > t:
+                return
+            if planned.param is not None:
+                self._params.set(*planned.param, author=GRADER)
+                self._next += 1
+                continue
+            if self._router.server(planned.call.service) is None:
+                return
+            self._busy = True
+            self._router.call(Caller(CALLER_ID, "grader", done=self._answered), planned.call, t)
 
     def _answered(self, status: str, error: str, response: bytes) -> None:
         self._busy = False

@@ -228,7 +228,7 @@ class Session:
             self.services = ServiceRouter(self.wire, self.world, rec.write,
                                           lambda index, item: self.nodes[index].deliveries.append(item),
                                           self._world_sample, self._take_declarations)
-            self.caller = ScenarioCaller(self._calls, self.start_ns, self.services)
+            self.caller = ScenarioCaller(self._calls, self.start_ns, self.services, self.params)
             try:
                 with timing.stage("node start-up", absorb=True):
                     for node in list(self.nodes):

@@ -1,13 +1,12 @@
 """A scenario's param_sets become the SetParameters calls `ros2 param set` makes: the value typed as YAML reads it,
-in one script with the service calls, in time order; a ROS 1 run cannot take them, and the scenario keeps them in
-order within its duration."""
+in one script with the service calls, in time order; for ROS 1 nodes `rosparam set` on the run's parameter server;
+the scenario keeps them in order within its duration; a node of either library reads each set at its time."""
 from __future__ import annotations
 
 import pydantic
 import pytest
 
 from grader.runtime.scenario_calls import SET_PARAMETERS, planned_calls
-from grader.runtime.services import ServiceRouteError
 from grader.runtime.wire import wire_for
 from sim import Scenario
 
@@ -47,10 +46,10 @@ def test_sets_and_calls_make_one_script_in_time_order() -> None:
         (4.0, "/n/set_parameters")]
 
 
-def test_a_ros1_run_cannot_take_parameter_sets() -> None:
-    scenario = Scenario(duration=5.0, param_sets=[{"t": 1.0, "node": "/circle", "name": "radius", "value": 1.2}])
-    with pytest.raises(ServiceRouteError, match=r"param_sets\[0\] \(/circle radius\).*ROS 1"):
-        planned_calls(scenario.service_calls, wire_for("ros1"), scenario.param_sets)
+def test_for_ros1_a_set_is_rosparam_set_of_the_nodes_private_parameter() -> None:
+    scenario = Scenario(duration=5.0, param_sets=[{"t": 1.0, "node": "/circle", "name": "gains.p", "value": 1.2}])
+    [planned] = planned_calls(scenario.service_calls, wire_for("ros1"), scenario.param_sets)
+    assert (planned.t_ns, planned.call, planned.param) == (1_000_000_000, None, ("/circle/gains/p", 1.2))
 
 
 @pytest.mark.parametrize("sets,says", [
@@ -63,3 +62,49 @@ def test_a_ros1_run_cannot_take_parameter_sets() -> None:
 def test_the_scenario_refuses_sets_out_of_order_or_malformed(sets, says) -> None:
     with pytest.raises(pydantic.ValidationError, match=says):
         Scenario(duration=5.0, param_sets=sets)
+
+
+ROSPY_NODE = """import rospy
+rospy.init_node("param_circle")
+rate = rospy.Rate(10)
+last = None
+while not rospy.is_shutdown():
+    radius = rospy.get_param("~radius", 0.5)
+    if radius != last:
+        print("%.2f radius %r" % (rospy.get_time(), radius))
+        last = radius
+    rate.sleep()
+"""
+
+RCLPY_NODE = """import rclpy
+from rclpy.node import Node
+rclpy.init()
+node = Node("param_circle")
+node.declare_parameter("radius", 0.5)
+node.add_post_set_parameters_callback(
+    lambda params: print("%.2f radius %r" % (node.get_clock().now().nanoseconds / 1e9, params[0].value)))
+rclpy.spin(node)
+"""
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("flavour,source", [("ros1", ROSPY_NODE), ("ros2", RCLPY_NODE)])
+def test_a_node_reads_each_set_at_its_time(tmp_path, flavour, source) -> None:
+    """rospy: `rosparam set` on the run's parameter server, which the node's own get_param reads at its next step;
+    rclpy: the set reaches the node's set_parameters, which its executor answers at once."""
+    from grader.recording import Recording
+    from grader.runtime import NodeSpec, RunSpec
+    from grader.runtime.session import run
+
+    script = tmp_path / "param_circle.py"
+    script.write_text(source)
+    scenario = Scenario(duration=3.0, param_sets=[{"t": 1.0, "node": "/param_circle", "name": "radius", "value": 1.2},
+                                                  {"t": 2.0, "node": "/param_circle", "name": "radius", "value": 0.8}])
+    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=script, flavour=flavour),)), tmp_path / "r.mcap",
+        tmp_path / "r.log")
+    lines = [text for _, stream, text in Recording.open(tmp_path / "r.mcap").output_lines() if stream == "stdout"]
+    seen = [(float(t), value) for t, _, value in (line.split() for line in lines[-2:])]
+    # within one step of the node's (rospy: its 10 Hz loop; rclpy: the executor takes the request at once)
+    assert [(value, 0.0 <= t - due < 0.1) for (t, value), due in zip(seen, (3.0, 4.0))] == [("1.2", True), ("0.8", True)]
+    if flavour == "ros2":
+        assert [t for t, _ in seen] == [3.0, 4.0]
