@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 from functools import cache
+from types import SimpleNamespace
 
 import pytest
 from scoring_synth import Segment, commands, path, run, square_segments
@@ -171,7 +172,7 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     shutdown = {(t, c.id) for t in DRIVING_TASKS for c in RUBRICS[t].criteria if c.metric_def.needs_shutdown}
     assert every == {(t, c) for t, c, _ in CRITERIA} | shutdown
     assert {c for _, c in shutdown} == {"shutdown_stop"}
-    assert set(RUBRICS) - set(DRIVING_TASKS) == {"add_two_ints"}  # compared on its own below
+    assert set(RUBRICS) - set(DRIVING_TASKS) == {"add_two_ints", "param_circle"}  # compared on their own below
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:
@@ -250,3 +251,31 @@ def test_shutdown_criteria_still_see_what_came_after_ctrl_c() -> None:
     assert m["moving_at_end"] is True and m["observed_s"] == pytest.approx(5.0, abs=0.05)
     assert "judged_until_s" not in m
 
+
+def _param_circle(ctrl_c: bool) -> dict[str, RunData]:
+    """A correct param_circle at 0.1 m/s: each stretch's circle has the radius the grader set at its start (the
+    recorded SetParameters calls, accepted); with Ctrl+C at the end the robot then drives on, too fast."""
+    rubric = RUBRICS["param_circle"]
+    runs = {}
+    for s in rubric.scenarios:
+        t0, end = s.start_time, s.shutdown_at
+        times = [0.0] + [p.t for p in s.param_sets] + [end]
+        radii = [0.5] + [p.value for p in s.param_sets]
+        segs = [(later - earlier, 0.1, 0.1 / r) for earlier, later, r in zip(times, times[1:], radii)]
+        calls = tuple(ServiceCall(
+            t0 + p.t, "/param_circle/set_parameters",
+            {"parameters": [SimpleNamespace(name="radius", value=SimpleNamespace(type=3, double_value=p.value))]},
+            {"results": [SimpleNamespace(successful=True, reason="")]}) for p in s.param_sets)
+        motion = segs + (AFTER["drives"][0] if ctrl_c else [])
+        data = run(motion, x0=s.initial_pose.x, y0=s.initial_pose.y, yaw0=s.initial_pose.yaw, t0=t0,
+                   info=RunInfo(shutdown_requested_s=t0 + end if ctrl_c else None), shutdown_at=end if ctrl_c else None)
+        runs[s.name] = replace(data, service_calls=calls)
+    return runs
+
+
+def test_ctrl_c_after_the_stretches_changes_no_radius_follows_credit() -> None:
+    rubric = RUBRICS["param_circle"]
+    plain, interrupted = (next(c for c in score_task(rubric, _param_circle(ctrl_c)).criteria
+                               if c.id == "radius_follows") for ctrl_c in (False, True))
+    assert plain.score == plain.max_score, plain.feedback
+    assert interrupted.score == plain.score, interrupted.feedback

@@ -28,6 +28,7 @@ CONTRACT = {
     "turtle_clean": ["coverage", "no_wall_hit", "finishes"],
     "turtle_launch": ["drives", "direction", "turns"],
     "add_two_ints": ["serves", "sums"],
+    "param_circle": ["radius_follows", "shutdown_stop"],
 }
 
 MINIMAL = '''
