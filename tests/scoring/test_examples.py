@@ -35,6 +35,8 @@ def _reference_scripts(task: str) -> list[Path]:
 
 # Tasks of ROS 2 interfaces only (example_interfaces): their reference is an ament_python package of rclpy nodes.
 ROS2_TASKS = {"add_two_ints": "py_srvcli"}
+# ROS 2-only tasks whose reference is a COM2009 ament_cmake package: scripts/ installed by install(PROGRAMS).
+ROS2_CMAKE_TASKS = {"param_circle": "part3_beyond_basics"}
 
 
 @pytest.mark.parametrize("task", sorted(RUBRICS))
@@ -44,6 +46,15 @@ def test_every_task_has_an_executable_reference_node(task: str) -> None:
         for node in RUBRICS[task].nodes:
             text = next(package.rglob(node.script)).read_text(encoding="utf-8")
             assert "rclpy" in text and f"{node.script[:-3]} = " in (package / "setup.py").read_text()
+            compile(text, node.script, "exec")
+        return
+    if task in ROS2_CMAKE_TASKS:
+        package = ROOT / "reference_solutions_ros2_cmake" / ROS2_CMAKE_TASKS[task]
+        for node in RUBRICS[task].nodes:
+            script = package / "scripts" / node.script
+            text = script.read_text(encoding="utf-8")
+            assert text.startswith("#!/usr/bin/env python3\n") and "rclpy" in text and script.stat().st_mode & 0o111
+            assert f"scripts/{node.script}" in (package / "CMakeLists.txt").read_text()
             compile(text, node.script, "exec")
         return
     for path in _reference_scripts(task):
