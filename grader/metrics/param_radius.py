@@ -49,11 +49,13 @@ def measure(run: RunData, params: Params) -> Measurement:
     node, name = params.node.rstrip("/"), params.name
     sets = _sets(run, params)
     if len(sets) < len(params.values):
-        missing = params.values[len(sets)]
+        missing = f"The grader's `ros2 param set {node} {name} {params.values[len(sets)]}` never reached your node"
+        ended = run.run.ended_s
+        if ended is not None and ended < (run.shutdown_time() or math.inf):
+            raise MetricError(f"{missing}: it had ended by then ({ended - run.start_time:.1f} s after the start)")
         raise MetricError(
-            f"The grader's `ros2 param set {node} {name} {missing}` never reached your node: nothing served "
-            f"{node}/set_parameters. Name the node '{node.lstrip('/')}' (super().__init__(\"{node.lstrip('/')}\")) "
-            "and keep it spinning.")
+            f"{missing}: nothing served {node}/set_parameters. Name the node '{node.lstrip('/')}' "
+            f"(super().__init__(\"{node.lstrip('/')}\")) and keep it spinning")
     traj = run.trajectory(params.source)
     started = first_motion(traj, params.rest_speed, params.rest_turn_rate)
     end = run.shutdown_time() or math.inf

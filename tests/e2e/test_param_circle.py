@@ -110,3 +110,13 @@ def test_a_node_under_another_name_is_never_reached_and_told_the_name(tmp_path):
     assert _scores(task) == {"radius_follows": False, "shutdown_stop": True}
     assert "nothing served /param_circle/set_parameters. Name the node 'param_circle'" in _feedback(
         task, "radius_follows")
+
+
+def test_a_node_that_dies_at_the_first_set_is_told_it_had_ended(tmp_path):
+    task = grade_submission(_variant(tmp_path, '        self.declare_parameter(name="radius", value=0.5)  # m\n', (
+        '        self.declare_parameter(name="radius", value=0.5)  # m\n'
+        '        self.add_on_set_parameters_callback(lambda params: 1 / 0)\n')), tmp_path / "out",
+        ["param_circle"]).tasks[0]
+    feedback = _feedback(task, "radius_follows")
+    assert "`ros2 param set /param_circle radius 0.8` never reached your node: it had ended by then (10.0 s" in feedback
+    assert "ZeroDivisionError: division by zero" in feedback
