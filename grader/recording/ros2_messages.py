@@ -37,9 +37,19 @@ RCL_INTERFACES_SERVICES = {
                                                    "rcl_interfaces/SetParametersResult result"),
 }
 
+# The service by which every ROS 2 action's client cancels goals (action_msgs/srv/CancelGoal.srv, Jazzy).
+CANCEL_GOAL = {"action_msgs/srv/CancelGoal": (
+    "action_msgs/GoalInfo goal_info",
+    "int8 ERROR_NONE=0\nint8 ERROR_REJECTED=1\nint8 ERROR_UNKNOWN_GOAL_ID=2\nint8 ERROR_GOAL_TERMINATED=3\n"
+    "int8 return_code\naction_msgs/GoalInfo[] goals_canceling")}
+
+# Built-in actions as (goal, result, feedback) definitions: example_interfaces' Fibonacci (the action tutorial's).
+ACTIONS = {"example_interfaces/action/Fibonacci": ("int32 order", "int32[] sequence", "int32[] sequence")}
+
 # Services as (request, response) definitions.
 SERVICES = {
     **RCL_INTERFACES_SERVICES,
+    **CANCEL_GOAL,
     "std_srvs/srv/Empty": ("", ""),
     "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
     "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),
@@ -74,6 +84,11 @@ def _catalog_typestore() -> Typestore:
             # rosbags files any parsed type under pkg/msg/: move it to the service's own name
             parsed = get_types_from_msg(text or _EMPTY_STRUCT, f"{name}_{part}")
             types.update({key.replace("/srv/msg/", "/srv/"): value for key, value in parsed.items()})
+    # derived.py needs only rosbags; imported here because grader.interfaces' catalog imports this module
+    from grader.interfaces.derived import action_types  # noqa: PLC0415
+    for name, texts in ACTIONS.items():
+        types.update(action_types(name, *(next(iter(get_types_from_msg(text, "pkg/msg/Part").values()))
+                                          for text in texts)))
     store.register(types)
     return store
 
@@ -96,7 +111,8 @@ class Ros2Catalog:
         self._store = _catalog_typestore()
         if extra:
             self._store.register(dict(extra))
-        self._services = frozenset(SERVICES) | frozenset(services)
+        self._services = frozenset(SERVICES) | frozenset(services) | frozenset(
+            f"{action}_{part}" for action in ACTIONS for part in ("SendGoal", "GetResult"))
         self._msgdefs: dict[str, str] = {}
         self._hashes: dict[str, str] = {}
         self._hasher: Typestore | None = None

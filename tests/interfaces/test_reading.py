@@ -32,8 +32,9 @@ def test_ros2_names_of_a_service_and_an_action(tmp_path: Path) -> None:
     assert set(found.payload["services"]) == {"game_interfaces/srv/MyNumberGame",
                                               "game_interfaces/action/ExploreForward_SendGoal",
                                               "game_interfaces/action/ExploreForward_GetResult"}
-    # the node is given the action's UUID type, which its built-in table lacks, and not the types it has
-    assert "unique_identifier_msgs/msg/UUID" in found.payload["messages"]
+    # the node is given the action's own types, and not those its built-in table has (the goal's UUID included)
+    assert "game_interfaces/action/ExploreForward_FeedbackMessage" in found.payload["messages"]
+    assert "unique_identifier_msgs/msg/UUID" not in found.payload["messages"]
     assert "builtin_interfaces/msg/Time" not in found.payload["messages"]
 
 

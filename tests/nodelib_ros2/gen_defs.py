@@ -11,13 +11,14 @@ from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 from rosbags.typesys.base import Nodetype
 from rosbags.typesys.store import Typestore
 
-from grader.interfaces.derived import service_types
-from grader.recording.ros2_messages import RCL_INTERFACES_SERVICES, rihs01_hasher
+from grader.interfaces.derived import action_types, service_types
+from grader.recording.ros2_messages import ACTIONS, CANCEL_GOAL, RCL_INTERFACES_SERVICES, rihs01_hasher
 
 TARGET = Path(__file__).resolve().parents[2] / "grader" / "nodelib" / "ros2" / "rosgrade_rosidl" / "_defs.py"
 
 PACKAGES = ("builtin_interfaces", "std_msgs", "geometry_msgs", "nav_msgs", "sensor_msgs", "rosgraph_msgs",
-            "rcl_interfaces", "tf2_msgs", "service_msgs", "std_srvs", "example_interfaces")
+            "rcl_interfaces", "tf2_msgs", "service_msgs", "std_srvs", "example_interfaces", "action_msgs",
+            "unique_identifier_msgs")
 
 # rosbags drops .msg default values; these are every default in the covered Jazzy packages (rosidl's *__DEFAULT).
 DEFAULTS = {
@@ -26,11 +27,12 @@ DEFAULTS = {
     "rcl_interfaces/msg/ParameterDescriptor": {"read_only": False, "dynamic_typing": False},
 }
 
-# rosbags has no services: std_srvs, example_interfaces' AddTwoInts (the ROS 2 service tutorial's) and every node's
-# parameter services as (request, response) .msg text, as in their Jazzy .srv files.
+# rosbags has no services: std_srvs, example_interfaces' AddTwoInts (the ROS 2 service tutorial's), every node's
+# parameter services and every action's CancelGoal as (request, response) .msg text, as in their Jazzy .srv files.
 SERVICES = {
     "example_interfaces/srv/AddTwoInts": ("int64 a\nint64 b", "int64 sum"),
     **RCL_INTERFACES_SERVICES,
+    **CANCEL_GOAL,
     "std_srvs/srv/Empty": ("", ""),
     "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),
     "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
@@ -39,10 +41,17 @@ SERVICES = {
 _DUMMY = "structure_needs_at_least_one_member"
 
 
+def _parsed(text: str) -> tuple:
+    return next(iter(get_types_from_msg(text, "pkg/msg/Part").values()))
+
+
 def _service_types(service: str, request: str, response: str) -> dict:
     """The request, response and event messages and the service itself as rosidl describes it for hashing."""
-    parts = [next(iter(get_types_from_msg(text, "pkg/msg/Part").values())) for text in (request, response)]
-    return service_types(service, *parts)
+    return service_types(service, _parsed(request), _parsed(response))
+
+
+def _action_services(action: str) -> list[str]:
+    return [f"{action}_SendGoal", f"{action}_GetResult"]
 
 
 def typestore() -> Typestore:
@@ -50,6 +59,8 @@ def typestore() -> Typestore:
     store = get_typestore(Stores.ROS2_JAZZY)
     for service, (request, response) in SERVICES.items():
         store.register(_service_types(service, request, response))
+    for action, parts in ACTIONS.items():
+        store.register(action_types(action, *(_parsed(text) for text in parts)))
     return store
 
 
@@ -66,11 +77,13 @@ def _field(name: str, desc: tuple, defaults: dict) -> tuple:
     return (name, base, kind, size, bound, defaults.get(name))
 
 
-def table(store: Typestore) -> tuple[dict, dict]:
-    """MESSAGES and SERVICES as they go into _defs.py."""
+def table(store: Typestore) -> tuple[dict, dict, dict]:
+    """MESSAGES, SERVICES and ACTIONS as they go into _defs.py."""
     messages = {}
     hasher = rihs01_hasher(store.fielddefs)  # rosidl's hashes: a .msg char is IDL uint8
-    names = sorted(n for n in store.fielddefs if n.split("/")[0] in PACKAGES and n not in SERVICES)
+    services = [*SERVICES, *(name for action in ACTIONS for name in _action_services(action))]
+    structs = {*services, *ACTIONS}
+    names = sorted(n for n in store.fielddefs if n.split("/")[0] in PACKAGES and n not in structs)
     for name in names:
         consts, fields = store.fielddefs[name]
         defaults = DEFAULTS.get(name, {})
@@ -79,13 +92,13 @@ def table(store: Typestore) -> tuple[dict, dict]:
             tuple((cname, ctype, value) for cname, ctype, value in consts),
             hasher.hash_rihs01(name),
         )
-    services = {name: hasher.hash_rihs01(name) for name in sorted(SERVICES)}
-    return messages, services
+    return (messages, {name: hasher.hash_rihs01(name) for name in sorted(services)},
+            {name: hasher.hash_rihs01(name) for name in sorted(ACTIONS)})
 
 
 def render() -> str:
     """The text of _defs.py: one JSON text per type, so the module compiles fast even without a .pyc."""
-    messages, services = table(typestore())
+    messages, services, actions = table(typestore())
     lines = [
         '"""ROS 2 Jazzy interface definitions for the rosidl runtime: fields, constants, defaults, RIHS01 hashes.',
         "",
@@ -104,6 +117,13 @@ def render() -> str:
     lines.append("# service type -> RIHS01; its messages are MESSAGES[type + '_Request' / '_Response' / '_Event'].")
     lines.append("SERVICES: dict[str, str] = {")
     lines.extend(f"    {name!r}: {rihs!r}," for name, rihs in services.items())
+    lines.append("}")
+    lines.append("")
+    lines.append("# action type -> RIHS01; its messages are MESSAGES[type + '_Goal' / '_Result' / '_Feedback' / "
+                 "'_FeedbackMessage'],")
+    lines.append("# its services SERVICES[type + '_SendGoal' / '_GetResult'].")
+    lines.append("ACTIONS: dict[str, str] = {")
+    lines.extend(f"    {name!r}: {rihs!r}," for name, rihs in actions.items())
     lines.append("}")
     return "\n".join(lines) + "\n"
 

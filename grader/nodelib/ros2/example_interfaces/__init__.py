@@ -1,1 +1,1 @@
-"""ROS 2 example_interfaces interfaces (rosgrade's rosidl runtime): AddTwoInts, the service tutorial's."""
+"""ROS 2 example_interfaces interfaces (rosgrade's rosidl runtime): AddTwoInts and Fibonacci, the service and action tutorials'."""

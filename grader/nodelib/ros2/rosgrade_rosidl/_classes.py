@@ -451,6 +451,9 @@ def _build_action(type_name: str) -> type:
         "SendGoalService": service_class(type_name + "_SendGoal"),
         "GetResultService": service_class(type_name + "_GetResult"),
         "FeedbackMessage": message_class(type_name + "_FeedbackMessage"),
+        # every action's generic cancel service and status message, as rosidl_generator_py names them
+        "CancelGoalService": service_class("action_msgs/srv/CancelGoal"),
+        "GoalStatusMessage": message_class("action_msgs/msg/GoalStatusArray"),
     })
 
     def __init__(self: Any) -> None:

@@ -7,8 +7,24 @@ from __future__ import annotations
 # type -> JSON [fields, constants, RIHS01]; field = [name, type, kind, size, string bound, default], type a
 # .msg primitive or a full type name, kind 0 scalar / 1 array of size / 2 sequence bounded by size (0: none).
 MESSAGES: dict[str, str] = {
+    'action_msgs/msg/GoalInfo': '[[["goal_id","unique_identifier_msgs/msg/UUID",0,0,0,null],["stamp","builtin_interfaces/msg/Time",0,0,0,null]],[],"RIHS01_6398fe763154554353930716b225947f93b672f0fb2e49fdd01bb7a7e37933e9"]',
+    'action_msgs/msg/GoalStatus': '[[["goal_info","action_msgs/msg/GoalInfo",0,0,0,null],["status","int8",0,0,0,null]],[["STATUS_UNKNOWN","int8",0],["STATUS_ACCEPTED","int8",1],["STATUS_EXECUTING","int8",2],["STATUS_CANCELING","int8",3],["STATUS_SUCCEEDED","int8",4],["STATUS_CANCELED","int8",5],["STATUS_ABORTED","int8",6]],"RIHS01_32f4cfd717735d17657e1178f24431c1ce996c878c515230f6c5b3476819dbb9"]',
+    'action_msgs/msg/GoalStatusArray': '[[["status_list","action_msgs/msg/GoalStatus",2,0,0,null]],[],"RIHS01_6c1684b00f177d37438febe6e709fc4e2b0d4248dca4854946f9ed8b30cda83e"]',
+    'action_msgs/srv/CancelGoal_Event': '[[["info","service_msgs/msg/ServiceEventInfo",0,0,0,null],["request","action_msgs/srv/CancelGoal_Request",2,1,0,null],["response","action_msgs/srv/CancelGoal_Response",2,1,0,null]],[],"RIHS01_178f81615ce6be41ad328211d7a56b08b00e73f41f0b8aec256b2f3ff97a5e7e"]',
+    'action_msgs/srv/CancelGoal_Request': '[[["goal_info","action_msgs/msg/GoalInfo",0,0,0,null]],[],"RIHS01_3d3c84653c1f96918086887e1dcb236faec88b81a5b14fd4cf4840065bcdf8af"]',
+    'action_msgs/srv/CancelGoal_Response': '[[["return_code","int8",0,0,0,null],["goals_canceling","action_msgs/msg/GoalInfo",2,0,0,null]],[["ERROR_NONE","int8",0],["ERROR_REJECTED","int8",1],["ERROR_UNKNOWN_GOAL_ID","int8",2],["ERROR_GOAL_TERMINATED","int8",3]],"RIHS01_35e682cf3f510e83c70a82a4aac888496dedee56773bf9d8e5e0aa81f9e1c960"]',
     'builtin_interfaces/msg/Duration': '[[["sec","int32",0,0,0,null],["nanosec","uint32",0,0,0,null]],[],"RIHS01_e8d009f659816f758b75334ee1a9ca5b5c0b859843261f14c7f937349599d93b"]',
     'builtin_interfaces/msg/Time': '[[["sec","int32",0,0,0,null],["nanosec","uint32",0,0,0,null]],[],"RIHS01_b106235e25a4c5ed35098aa0a61a3ee9c9b18d197f398b0e4206cea9acf9c197"]',
+    'example_interfaces/action/Fibonacci_Feedback': '[[["sequence","int32",2,0,0,null]],[],"RIHS01_2b12e37361da6f408d4c85bc24a18de64333f29082f2ca34b5ee33dc4c8b42a9"]',
+    'example_interfaces/action/Fibonacci_FeedbackMessage': '[[["goal_id","unique_identifier_msgs/msg/UUID",0,0,0,null],["feedback","example_interfaces/action/Fibonacci_Feedback",0,0,0,null]],[],"RIHS01_c1de71afd52e49a89c53d8262366884185bc0a02f78ce051c4e46b0a7fe59bb2"]',
+    'example_interfaces/action/Fibonacci_GetResult_Event': '[[["info","service_msgs/msg/ServiceEventInfo",0,0,0,null],["request","example_interfaces/action/Fibonacci_GetResult_Request",2,1,0,null],["response","example_interfaces/action/Fibonacci_GetResult_Response",2,1,0,null]],[],"RIHS01_ac4e9cdb954c2e192c9f0753d46f59ab6f0101d5fb5b9542fd8ab2906e40c4d9"]',
+    'example_interfaces/action/Fibonacci_GetResult_Request': '[[["goal_id","unique_identifier_msgs/msg/UUID",0,0,0,null]],[],"RIHS01_c8a4f5e7d13b81286ee1043e2ecd084281cecf1ff06aaa799464f5f15479f003"]',
+    'example_interfaces/action/Fibonacci_GetResult_Response': '[[["status","int8",0,0,0,null],["result","example_interfaces/action/Fibonacci_Result",0,0,0,null]],[],"RIHS01_6021dc98ab9b4bbe395e48aa4de81ee5f68eb570f88358affcc648146668b24f"]',
+    'example_interfaces/action/Fibonacci_Goal': '[[["order","int32",0,0,0,null]],[],"RIHS01_226cb437e4355dcd3e914f930382a3b0cc1da81545bd319ed554e95a03255f51"]',
+    'example_interfaces/action/Fibonacci_Result': '[[["sequence","int32",2,0,0,null]],[],"RIHS01_fea81394f25aa4502217953f1a021fb750e79c10bbd43f13dd94632da6569649"]',
+    'example_interfaces/action/Fibonacci_SendGoal_Event': '[[["info","service_msgs/msg/ServiceEventInfo",0,0,0,null],["request","example_interfaces/action/Fibonacci_SendGoal_Request",2,1,0,null],["response","example_interfaces/action/Fibonacci_SendGoal_Response",2,1,0,null]],[],"RIHS01_d5e5b312dbf847307b0e876c2ecc9d80258e95b0d17f8f7bfc581c4a29c83484"]',
+    'example_interfaces/action/Fibonacci_SendGoal_Request': '[[["goal_id","unique_identifier_msgs/msg/UUID",0,0,0,null],["goal","example_interfaces/action/Fibonacci_Goal",0,0,0,null]],[],"RIHS01_3d088942b413247db536576f0286768c6be8fcd5d0c9a5d544f359fba090a238"]',
+    'example_interfaces/action/Fibonacci_SendGoal_Response': '[[["accepted","bool",0,0,0,null],["stamp","builtin_interfaces/msg/Time",0,0,0,null]],[],"RIHS01_d8c07bb3d5b766fe4b43159c9a5222af5214e2fcc29229b991d826166c512be1"]',
     'example_interfaces/srv/AddTwoInts_Event': '[[["info","service_msgs/msg/ServiceEventInfo",0,0,0,null],["request","example_interfaces/srv/AddTwoInts_Request",2,1,0,null],["response","example_interfaces/srv/AddTwoInts_Response",2,1,0,null]],[],"RIHS01_32c1d140259c71e5c355115942bcb31df98b4330e4d906b1b75ccb1c9b3ce6c8"]',
     'example_interfaces/srv/AddTwoInts_Request': '[[["a","int64",0,0,0,null],["b","int64",0,0,0,null]],[],"RIHS01_000c5fd92d6b2e1a05949348f584d6d652adea1e92d691792011ac2273508302"]',
     'example_interfaces/srv/AddTwoInts_Response': '[[["sum","int64",0,0,0,null]],[],"RIHS01_de5c030d4af33cba2749310b249737b631594703f9300495f48bffb2b44dcc2f"]',
@@ -150,10 +166,14 @@ MESSAGES: dict[str, str] = {
     'std_srvs/srv/Trigger_Response': '[[["success","bool",0,0,0,null],["message","string",0,0,0,null]],[],"RIHS01_2d946c21e2fc3f1e9ca6986a8191d85fcc70097a8bb7771a053564bc47009cdf"]',
     'tf2_msgs/msg/TF2Error': '[[["error","uint8",0,0,0,null],["error_string","string",0,0,0,null]],[["NO_ERROR","uint8",0],["LOOKUP_ERROR","uint8",1],["CONNECTIVITY_ERROR","uint8",2],["EXTRAPOLATION_ERROR","uint8",3],["INVALID_ARGUMENT_ERROR","uint8",4],["TIMEOUT_ERROR","uint8",5],["TRANSFORM_ERROR","uint8",6]],"RIHS01_db2485e7d6a0ec75bf087e058ee45df682acc3a621ca7780503d10aac141809a"]',
     'tf2_msgs/msg/TFMessage': '[[["transforms","geometry_msgs/msg/TransformStamped",2,0,0,null]],[],"RIHS01_e369d0f05a23ae52508854b66f6aa0437f3449d652e8cbf22d5abe85d020f087"]',
+    'unique_identifier_msgs/msg/UUID': '[[["uuid","uint8",1,16,0,null]],[],"RIHS01_1b8e8aca958cbea28fe6ef60bf6c19b683c97a9ef60bb34752067d0f2f7ab437"]',
 }
 
 # service type -> RIHS01; its messages are MESSAGES[type + '_Request' / '_Response' / '_Event'].
 SERVICES: dict[str, str] = {
+    'action_msgs/srv/CancelGoal': 'RIHS01_573d8b0a534451d7bc2ac8c5ffde8ac14b8593b7001175d0cd6516dcbeb8689a',
+    'example_interfaces/action/Fibonacci_GetResult': 'RIHS01_1b0de0d5d29dc955d92f546706568428632771db13ec84c15ec1c1a59f424a57',
+    'example_interfaces/action/Fibonacci_SendGoal': 'RIHS01_d1a57fb2a4afe8c21e34fb10db206f16ce6729b28531141472df92277c55b557',
     'example_interfaces/srv/AddTwoInts': 'RIHS01_e118de6bf5eeb66a2491b5bda11202e7b68f198d6f67922cf30364858239c81a',
     'rcl_interfaces/srv/DescribeParameters': 'RIHS01_845b484d71eb0673dae682f2e3ba3c4851a65a3dcfb97bddd82c5b57e91e4cff',
     'rcl_interfaces/srv/GetParameterTypes': 'RIHS01_da199c878688b3e530bdfe3ca8f74cb9fa0c303101e980a9e8f260e25e1c80ca',
@@ -164,4 +184,10 @@ SERVICES: dict[str, str] = {
     'std_srvs/srv/Empty': 'RIHS01_5888399dedec5ccc85ea6451949fd2c9f97bfdf963f9a588821639fcd31b5d19',
     'std_srvs/srv/SetBool': 'RIHS01_abe9e4bb6b41b40e6789712c00ec8871923e089af3f667a79992a428cff2da0a',
     'std_srvs/srv/Trigger': 'RIHS01_eeff2cd6fa5ad9d27cdf4dec64818317839b62f212a91e6b5304b634b2062c5f',
+}
+
+# action type -> RIHS01; its messages are MESSAGES[type + '_Goal' / '_Result' / '_Feedback' / '_FeedbackMessage'],
+# its services SERVICES[type + '_SendGoal' / '_GetResult'].
+ACTIONS: dict[str, str] = {
+    'example_interfaces/action/Fibonacci': 'RIHS01_9508051da1ea4658de144b09bd0690ff3de52104683d847aed764d2915906f51',
 }

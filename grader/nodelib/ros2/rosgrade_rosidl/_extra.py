@@ -5,9 +5,9 @@ import json
 
 from . import _defs
 
-# action type -> RIHS01; its messages are MESSAGES[type + '_Goal' / '_Result' / '_Feedback' / '_FeedbackMessage'],
+# action type -> RIHS01 (the built-in ones, then the run's); its messages are MESSAGES[type + '_Goal' / '_Result' / '_Feedback' / '_FeedbackMessage'],
 # its services SERVICES[type + '_SendGoal' / '_GetResult'].
-ACTIONS: dict[str, str] = {}
+ACTIONS: dict[str, str] = dict(_defs.ACTIONS)
 
 
 class InterfaceTableError(ValueError):
