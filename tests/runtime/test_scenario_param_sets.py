@@ -3,10 +3,16 @@ in one script with the service calls, in time order; for ROS 1 nodes `rosparam s
 the scenario keeps them in order within its duration; a node of either library reads each set at its time."""
 from __future__ import annotations
 
+import hashlib
+
 import pydantic
 import pytest
 
+from grader import timing
+from grader.recording import Recording
+from grader.runtime import NodeSpec, RunSpec, session
 from grader.runtime.scenario_calls import SET_PARAMETERS, planned_calls
+from grader.runtime.session import run
 from grader.runtime.wire import wire_for
 from sim import Scenario
 
@@ -92,10 +98,6 @@ rclpy.spin(node)
 def test_a_node_reads_each_set_at_its_time(tmp_path, flavour, source) -> None:
     """rospy: `rosparam set` on the run's parameter server, which the node's own get_param reads at its next step;
     rclpy: the set reaches the node's set_parameters, which its executor answers at once."""
-    from grader.recording import Recording
-    from grader.runtime import NodeSpec, RunSpec
-    from grader.runtime.session import run
-
     script = tmp_path / "param_circle.py"
     script.write_text(source)
     scenario = Scenario(duration=3.0, param_sets=[{"t": 1.0, "node": "/param_circle", "name": "radius", "value": 1.2},
@@ -108,3 +110,61 @@ def test_a_node_reads_each_set_at_its_time(tmp_path, flavour, source) -> None:
     assert [(value, 0.0 <= t - due < 0.1) for (t, value), due in zip(seen, (3.0, 4.0))] == [("1.2", True), ("0.8", True)]
     if flavour == "ros2":
         assert [t for t, _ in seen] == [3.0, 4.0]
+
+
+# Nodes that listen to /odom and do nothing visible but when a set reaches them: the world runs ahead of them.
+QUIET_NODES = {
+    "ros1": """import rospy
+from nav_msgs.msg import Odometry
+rospy.init_node("param_circle")
+pose = [None]
+rospy.Subscriber("/odom", Odometry, lambda msg: pose.__setitem__(0, msg.pose.pose))
+rate = rospy.Rate(2)
+last = None
+while not rospy.is_shutdown():
+    radius = rospy.get_param("~radius", 0.5)
+    if radius != last:
+        print("radius", radius)
+        last = radius
+    rate.sleep()
+""",
+    "ros2": """import rclpy
+from nav_msgs.msg import Odometry
+from rclpy.node import Node
+rclpy.init()
+node = Node("param_circle")
+node.declare_parameter("radius", 0.5)
+pose = [None]
+node.create_subscription(Odometry, "/odom", lambda msg: pose.__setitem__(0, msg.pose.pose), 10)
+node.add_post_set_parameters_callback(lambda params: print("radius", params[0].value))
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+""",
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("flavour", ["ros1", "ros2"])
+def test_a_run_with_sets_records_as_the_plain_lockstep(tmp_path, monkeypatch, flavour) -> None:
+    """The world runs ahead of a node only up to the grader's next set: with batches of moments the recording is
+    the lockstep's, byte for byte, and the node did run moments on its own."""
+    script = tmp_path / "param_circle.py"
+    script.write_text(QUIET_NODES[flavour])
+    scenario = Scenario(duration=6.0, shutdown_at=5.0,
+                        param_sets=[{"t": 2.0, "node": "/param_circle", "name": "radius", "value": 1.2},
+                                    {"t": 4.0, "node": "/param_circle", "name": "radius", "value": 0.8}])
+    digests, ahead = [], []
+    for moments in (session.MAX_MOMENTS, 0):
+        monkeypatch.setattr(session, "MAX_MOMENTS", moments)
+        path = tmp_path / f"{moments}.mcap"
+        with timing.collect() as counts:
+            run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=script, flavour=flavour),)), path,
+                tmp_path / f"{moments}.log")
+        digests.append(hashlib.sha256(path.read_bytes()).hexdigest())
+        ahead.append(counts.get("# moments run without a round trip", 0))
+        lines = [text for _, stream, text in Recording.open(path).output_lines() if stream == "stdout"]
+        assert lines[-2:] == ["radius 1.2", "radius 0.8"]
+    assert digests[0] == digests[1], "the recording with batches of moments differs from the plain lockstep's"
+    assert ahead[0] > 0 and ahead[1] == 0
