@@ -9,6 +9,7 @@ from functools import cache
 from types import SimpleNamespace
 
 import pytest
+from number_game_synth import play, scenario_requests
 from scoring_synth import Segment, commands, path, run, square_segments
 
 from grader.metrics import OutputLine, RunData, RunInfo
@@ -172,7 +173,7 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     shutdown = {(t, c.id) for t in DRIVING_TASKS for c in RUBRICS[t].criteria if c.metric_def.needs_shutdown}
     assert every == {(t, c) for t, c, _ in CRITERIA} | shutdown
     assert {c for _, c in shutdown} == {"shutdown_stop"}
-    assert set(RUBRICS) - set(DRIVING_TASKS) == {"add_two_ints", "param_circle"}  # compared on their own below
+    assert set(RUBRICS) - set(DRIVING_TASKS) == {"add_two_ints", "param_circle", "number_game"}  # on their own below
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:
@@ -198,6 +199,28 @@ def test_ctrl_c_after_the_calls_changes_no_service_credit(criterion: str) -> Non
                           for ctrl_c in (False, True))
     assert plain.score == plain.max_score, plain.feedback
     assert interrupted.score == plain.score and interrupted.measured["n_calls"] == 3
+
+
+def _number_game(ctrl_c: bool) -> dict[str, RunData]:
+    """A correct number game server answering the scenario's calls (secret 42, then 7 after the win); with Ctrl+C
+    at the end, a guess made after it goes unanswered."""
+    runs = {}
+    for s in RUBRICS["number_game"].scenarios:
+        t0, end = s.start_time, s.duration
+        calls = play(scenario_requests(s), [42, 7], t0=t0)
+        data = run([(end + (AFTER_S if ctrl_c else 0.0), 0.0, 0.0)], t0=t0,
+                   info=RunInfo(shutdown_requested_s=t0 + end if ctrl_c else None), shutdown_at=end if ctrl_c else None)
+        late = [ServiceCall(t0 + end + 0.5, "/guess_the_number", {"guess": 3, "cheat": False}, None)] if ctrl_c else []
+        runs[s.name] = replace(data, service_calls=tuple(calls + late))
+    return runs
+
+
+@pytest.mark.parametrize("criterion", [c.id for c in RUBRICS["number_game"].criteria])
+def test_ctrl_c_after_the_game_changes_no_number_game_credit(criterion: str) -> None:
+    plain, interrupted = (next(c for c in score_task(RUBRICS["number_game"], _number_game(ctrl_c)).criteria
+                               if c.id == criterion) for ctrl_c in (False, True))
+    assert plain.score == plain.max_score, plain.feedback
+    assert interrupted.score == plain.score and interrupted.measured["n_calls"] == plain.measured["n_calls"] == 103
 
 
 @pytest.mark.parametrize("task, criterion, after", [

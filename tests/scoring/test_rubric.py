@@ -29,6 +29,7 @@ CONTRACT = {
     "turtle_launch": ["drives", "direction", "turns"],
     "add_two_ints": ["serves", "sums"],
     "param_circle": ["radius_follows", "shutdown_stop"],
+    "number_game": ["serves", "hints", "counts_guesses", "cheat", "correct_guess"],
 }
 
 MINIMAL = '''

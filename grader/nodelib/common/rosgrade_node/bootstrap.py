@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import atexit
 import os
+import random
 import signal
 import sys
 
@@ -16,6 +17,7 @@ from .scheduler import Scheduler
 # CPU time between checks for a pure-Python busy wait in the main thread (see Scheduler.on_cpu_tick): one clock
 # period, so such a wait costs about as much wall time as it would at a real-time factor of 1.
 _CPU_TICK_S = 0.01
+RANDOM_SEED = 0  # what the global `random` generator starts from in every node
 
 
 class BootstrapError(Exception):
@@ -66,6 +68,9 @@ def start(channel: str) -> None:
     threads.install()
     realtime.install()
     excepthook.install()
+    # Python seeds `random` from os.urandom: a node that draws a number (the number game's secret) would record
+    # something else on every run. A fixed seed makes its draws, and so its recording, the same every run.
+    random.seed(RANDOM_SEED)
     atexit.register(_flush)
 
     sched = runtime.scheduler
