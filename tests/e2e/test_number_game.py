@@ -1,0 +1,65 @@
+"""The number_game task end to end: the grader plays the student's number game server (COM2009 Part 4, its own
+MyNumberGame interface in an ament_cmake package) with calls fixed in advance; the reference earns full marks, its
+recording holds the grader's requests and the server's responses (the secret it drew is the same every run), re-scores
+identically (`rosgrade score` too) and repeats bit for bit."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from grader.cli import main
+from grader.grading import grade_submission
+from grader.metrics.run import service_calls
+from grader.recording import Recording
+from grader.rubric import load_rubrics
+from grader.scoring import score_task
+
+pytestmark = pytest.mark.slow
+
+ROOT = Path(__file__).resolve().parents[2]
+PACKAGE = ROOT / "reference_solutions_ros2_cmake" / "part4_services"
+
+
+@pytest.fixture(scope="module")
+def reference(graded):
+    return graded(PACKAGE, ("number_game",)).tasks[0]
+
+
+def test_the_reference_server_scores_full_marks(reference):
+    assert reference.status == "graded", reference.message
+    assert reference.score == reference.max_score, {c.id: c.feedback for c in reference.criteria}
+    feedback = {c.id: c.feedback for c in reference.criteria}
+    assert feedback["cheat"] == "Both cheats gave the secret away (84, 75), counted, and were not correct."
+    assert feedback["hints"] == "All 100 hints pointed to the secret."
+
+
+def test_the_recording_holds_the_graders_game_and_the_servers_answers(reference):
+    recording = Recording.open(reference.recordings[0])
+    calls = service_calls(recording)
+    assert len(calls) == 103 and all(c.service == "/guess_the_number" for c in calls)
+    answered = [(c.request["guess"], c.request["cheat"], c.response["num_guesses"], c.response["hint"],
+                 c.response["correct"]) for c in calls]
+    assert answered[:3] == [(0, True, 1, "The answer is 84!", False), (0, False, 2, "Higher", False),
+                            (1, False, 3, "Higher", False)]
+    assert answered[85:88] == [(84, False, 86, "Winner", True), (85, False, 1, "Lower", False),
+                               (86, False, 2, "Lower", False)]
+    assert answered[-1] == (0, True, 17, "The answer is 75!", False)
+    assert calls[0].t - 2.0 == pytest.approx(0.5) and calls[-1].t - 2.0 < 3.0
+    callers = {(i.topic.rsplit("/", 1)[1], i.callerid, i.origin, i.type) for i in recording.topics()
+               if i.topic.startswith("/rosgrade/service/")}
+    assert callers == {("request", "/rosgrade", "grader", "part4_services/srv/MyNumberGame_Request"),
+                       ("response", "/number_game_service", "node", "part4_services/srv/MyNumberGame_Response")}
+
+
+def test_the_recording_rescores_identically_and_repeats_bit_for_bit(reference, tmp_path, capsys):
+    recordings = {Path(p).stem: Recording.open(p) for p in reference.recordings}
+    again = score_task(load_rubrics()["number_game"], recordings)
+    assert [c.model_dump() for c in again.criteria] == [c.model_dump() for c in reference.criteria]
+    assert main(["score", *reference.recordings, "--task", "number_game", "--json"]) == 0
+    [cli] = json.loads(capsys.readouterr().out)["tasks"]
+    assert [(c["id"], c["score"], c["feedback"]) for c in cli["criteria"]] == \
+        [(c.id, c.score, c.feedback) for c in reference.criteria]
+    second = grade_submission(PACKAGE, tmp_path, ["number_game"]).tasks[0]
+    assert Path(second.recordings[0]).read_bytes() == Path(reference.recordings[0]).read_bytes()
