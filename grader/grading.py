@@ -16,7 +16,7 @@ from grader.launch import LaunchError, find_packages, read_launch, turtlesim
 from grader.launch.specs import node_specs
 from grader.recording import Recording, RecordingError
 from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
-from grader.rubric import Node, Rubric, load_rubrics
+from grader.rubric import GRADER_NODES, Node, Rubric, load_rubrics
 from grader.rubricfile import RubricFile, load_rubric_files, stamp
 from grader.runtime import NodeSpec, RunSpec, ScriptNotFound, check_script, find_script
 from grader.runtime.client_library import (
@@ -110,7 +110,11 @@ def _script_nodes(folder: Path, rubric: Rubric) -> Started:
     if len({spec.flavour for spec in nodes}) > 1:
         raise ScriptNotFound("the task's nodes mix rospy and rclpy scripts; ROS 1 and ROS 2 nodes cannot talk to "
                              "each other: write them all with one client library")
-    return nodes, findings, [script for script, _ in located]
+    # The grader's own nodes (a server the student's client calls) are neither checked nor the student's files.
+    provided = tuple(NodeSpec(script=GRADER_NODES / node.script, args=tuple(node.args),
+                              flavour=client_library(GRADER_NODES / node.script, workspace))
+                     for node in rubric.grader_nodes)
+    return nodes + provided, findings, [script for script, _ in located]
 
 
 def _launch_nodes(folder: Path, rubric: Rubric) -> Started:
@@ -197,6 +201,8 @@ def _score_task(plan: _TaskPlan, outcomes: Sequence[Outcome]) -> TaskReport:
     paths: list[str] = []
     run_notes: list[str] = []
     timed_out = False
+    # The grader's own nodes serve until the run ends: that they were then stopped says nothing of the student's.
+    serving = tuple(f"{node.script}: still running when the scenario ended" for node in rubric.grader_nodes)
     for item, result in zip(plan.runs, outcomes):
         name = item.spec.name
         try:
@@ -211,7 +217,7 @@ def _score_task(plan: _TaskPlan, outcomes: Sequence[Outcome]) -> TaskReport:
         # Counts differ from scenario to scenario; the first (nominal) run's are the ones worth showing.
         firsts = result.topics + _hidden_text(nodes, item.log) if len(paths) == 1 else []
         for note in result.diagnostics + firsts:
-            if note not in run_notes:
+            if note not in run_notes and not note.startswith(serving):
                 run_notes.append(note)
     with timing.stage("scoring"):
         report = score_task(rubric, recordings)

@@ -32,6 +32,7 @@ DEFAULT_DIR = Path(__file__).resolve().parent.parent / "rubrics"  # the `rubrics
 # Names every feedback template may use besides the metric's quantities and the run facts.
 TEMPLATE_NAMES = frozenset({"measured", "lower", "upper", "expected", "scenario", "credit", "points", "score"})
 _ID = r"^[a-z][a-z0-9_]*$"
+GRADER_NODES = Path(__file__).resolve().parent / "nodes"  # the nodes the grader ships (grader_nodes)
 PLUGIN_DIR = "plugin_dir"  # validation context key: the folder plugin metric files are resolved in
 
 
@@ -83,6 +84,22 @@ class Node(_Model):
     stdin: str | None = None
     remaps: dict[str, str] = {}
     namespace: str | None = None  # ROS_NAMESPACE
+
+
+class GraderNode(_Model):
+    """A node the grader ships (``grader/nodes/``), run confined beside the student's: the server a student's client
+    calls, as the course's own node would be."""
+
+    script: str = Field(pattern=r"^[\w.-]+\.py$")
+    args: list[str] = []
+
+    @field_validator("script")
+    @classmethod
+    def _shipped(cls, script: str) -> str:
+        if not (GRADER_NODES / script).is_file():
+            shipped = ", ".join(sorted(p.name for p in GRADER_NODES.glob("*.py")))
+            raise ValueError(f"the grader ships no node {script}; it ships {shipped}")
+        return script
 
 
 class LaunchFile(_Model):
@@ -260,6 +277,7 @@ class Rubric(_Model):
     robot: str
     nodes: list[Node] = []
     launch: LaunchFile | None = None  # instead of `nodes`: the nodes the student's launch file starts
+    grader_nodes: list[GraderNode] = []  # with `nodes`: the grader's own nodes, started after the student's
     scenarios: list[Scenario] = Field(min_length=1)
     criteria: list[Criterion] = Field(min_length=1)
     limits: Limits = Limits()  # resource limits for the student's node in every scenario
@@ -292,6 +310,8 @@ class Rubric(_Model):
         if bool(self.nodes) == (self.launch is not None):
             raise ValueError("a rubric names the node(s) to run in [[nodes]] or a launch file in [launch]: "
                              "give exactly one of them")
+        if self.grader_nodes and not self.nodes:
+            raise ValueError("grader_nodes run beside the student's [[nodes]]; a launch file starts its own")
         names = [s.name for s in self.scenarios]
         _unique(names, "scenario name")
         _unique([c.id for c in self.criteria], "criterion id")

@@ -173,7 +173,8 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     shutdown = {(t, c.id) for t in DRIVING_TASKS for c in RUBRICS[t].criteria if c.metric_def.needs_shutdown}
     assert every == {(t, c) for t, c, _ in CRITERIA} | shutdown
     assert {c for _, c in shutdown} == {"shutdown_stop"}
-    assert set(RUBRICS) - set(DRIVING_TASKS) == {"add_two_ints", "param_circle", "number_game"}  # on their own below
+    assert set(RUBRICS) - set(DRIVING_TASKS) == {  # compared on their own below
+        "add_two_ints", "param_circle", "number_game", "number_game_client"}
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:
@@ -221,6 +222,30 @@ def test_ctrl_c_after_the_game_changes_no_number_game_credit(criterion: str) -> 
                                if c.id == criterion) for ctrl_c in (False, True))
     assert plain.score == plain.max_score, plain.feedback
     assert interrupted.score == plain.score and interrupted.measured["n_calls"] == plain.measured["n_calls"] == 103
+
+
+def _number_game_client(ctrl_c: bool) -> dict[str, RunData]:
+    """A correct client: its parameters' request, answered by the grader's server, and the response logged; with
+    Ctrl+C at the end, it logs nonsense after it."""
+    runs = {}
+    for s in RUBRICS["number_game_client"].scenarios:
+        t0, end = s.start_time, s.duration
+        call = ServiceCall(t0 + 0.5, "/guess_the_number", {"guess": 99, "cheat": True},
+                           {"num_guesses": 7, "hint": "The answer is 37!", "correct": False})
+        lines = [OutputLine(t0 + 0.51, "rosout", "Number of attempts so far: 7, hint: 'The answer is 37!'", "INFO")]
+        late = [OutputLine(t0 + end + 0.5, "rosout", "nonsense", "INFO")] if ctrl_c else []
+        data = run([(end + (AFTER_S if ctrl_c else 0.0), 0.0, 0.0)], t0=t0,
+                   info=RunInfo(shutdown_requested_s=t0 + end if ctrl_c else None), shutdown_at=end if ctrl_c else None)
+        runs[s.name] = replace(data, service_calls=(call,), lines=tuple(lines + late))
+    return runs
+
+
+@pytest.mark.parametrize("criterion", [c.id for c in RUBRICS["number_game_client"].criteria])
+def test_ctrl_c_after_the_response_changes_no_client_credit(criterion: str) -> None:
+    plain, interrupted = (next(c for c in score_task(RUBRICS["number_game_client"], _number_game_client(ctrl_c))
+                               .criteria if c.id == criterion) for ctrl_c in (False, True))
+    assert plain.score == plain.max_score, plain.feedback
+    assert interrupted.score == plain.score, interrupted.feedback
 
 
 @pytest.mark.parametrize("task, criterion, after", [

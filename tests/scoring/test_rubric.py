@@ -30,6 +30,7 @@ CONTRACT = {
     "add_two_ints": ["serves", "sums"],
     "param_circle": ["radius_follows", "shutdown_stop"],
     "number_game": ["serves", "hints", "counts_guesses", "cheat", "correct_guess"],
+    "number_game_client": ["sends_request", "reports_response"],
 }
 
 MINIMAL = '''
