@@ -25,9 +25,23 @@ def message_class(short: str) -> type:
     """'geometry_msgs/Point' -> the class."""
     package, name = short.split("/")
     base, _, part = name.rpartition("_")
+    action, _, service = base.rpartition("_")
+    if service in _ACTION_SERVICES:  # an action's service's message, reached through the action's Impl
+        return getattr(getattr(_action(package, action).Impl, _ACTION_SERVICES[service]), part)
     if part in ("Request", "Response", "Event"):  # a service's message, reached through its service class
         return getattr(getattr(importlib.import_module(f"{package}.srv"), base), part)
+    if part == "FeedbackMessage":
+        return _action(package, base).Impl.FeedbackMessage
+    if part in ("Goal", "Result", "Feedback"):
+        return getattr(_action(package, base), part)
     return getattr(importlib.import_module(f"{package}.msg"), name)
+
+
+_ACTION_SERVICES = {"SendGoal": "SendGoalService", "GetResult": "GetResultService"}
+
+
+def _action(package: str, name: str) -> type:
+    return getattr(importlib.import_module(f"{package}.action"), name)
 
 
 def scalar(rng: random.Random, element: str) -> object:

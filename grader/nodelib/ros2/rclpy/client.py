@@ -53,18 +53,24 @@ class Client:
         if not isinstance(request, self.srv_type.Request):
             raise TypeError()
         self._check()
-        import rosgrade_rosidl
-        self._sequence += 1
         future = Future()
-        self._pending[self._sequence] = future
+        self._pending[self._sequence + 1] = future
         future.add_done_callback(self.remove_pending_request)
+        self.send_request(request)
+        return future
+
+    def send_request(self, request) -> int:
+        """Send ``request`` (CALL); returns its sequence number, which its response comes back with (an action
+        client's requests, whose futures are its own)."""
+        import rosgrade_rosidl
         self._check_thread()
+        self._sequence += 1
         _runtime.charge()
         name, type_hash = _graph.type_of(self.srv_type)
         _runtime.link().send(ch.encode_header_bytes(ch.CALL, {
             "service": self.srv_name, "type": name, "md5sum": type_hash, "probe": False, "id": self._handle,
             "seq": self._sequence}, rosgrade_rosidl.serialize(request)))
-        return future
+        return self._sequence
 
     def call(self, request, timeout_sec: float | None = None):
         """Send ``request`` and wait for the response; another thread must spin the node meanwhile."""
@@ -84,6 +90,10 @@ class Client:
 
     def has_response(self) -> bool:
         return bool(self._responses)
+
+    def take_sequenced_response(self):
+        """(sequence number, response) of the oldest kept response."""
+        return self._responses.popleft()
 
     def take_response(self):
         """(future, response) of the oldest kept response, or None when its request was given up."""

@@ -3,8 +3,8 @@
 An executor waits (``scheduler.block``) until one of its nodes has work: a timer due (the wake time is the first
 /clock tick at or after its next call on sim time, or the exact wall/steady time otherwise), a delivered message, a
 service response or request, a triggered guard condition or task, the spin's future or timeout, or a context
-shutdown. One wait gives a list of ready work in rclpy's order (tasks, then per node: timers, the /clock
-subscription, subscriptions, guard conditions, clients, services); each ``spin_once`` runs the next item, and waits
+shutdown. One wait gives a list of ready work in rclpy's order (tasks, the waitables of every node: action servers
+and clients, then per node: timers, the /clock subscription, subscriptions, guard conditions, clients, services); each ``spin_once`` runs the next item, and waits
 again only once the list is used up. A SingleThreadedExecutor runs callbacks in the spinning thread, so a
 callback that blocks starves everything else, the node's clock included. ``spin()`` applies a new /clock when it
 looks at a node instead of treating it as an item of its own (the same times, without a wake-up per tick);
@@ -12,6 +12,7 @@ looks at a node instead of treating it as an item of its own (the same times, wi
 """
 from __future__ import annotations
 
+import inspect
 import os
 import warnings
 from collections import deque
@@ -36,6 +37,13 @@ class ExternalShutdownException(Exception):
 
 class ConditionReachedException(Exception):
     """Future has been completed."""
+
+
+async def await_or_execute(callback, *args):
+    """Await a callback if it is a coroutine function, else call it."""
+    if inspect.iscoroutinefunction(callback):
+        return await callback(*args)
+    return callback(*args)
 
 
 class TimeoutObject:
@@ -134,14 +142,19 @@ class Executor:
 
     def _ready_work(self, clock_is_work: bool) -> list:
         """What is ready now, in rclpy's order (one wait set's worth)."""
+        # a task already queued for a worker (MultiThreadedExecutor) is not work again
         work: list = [(task, "task", node) for task, _, node in self._tasks
-                      if not task.executing() and not task.done() and (node is None or node in self._nodes)]
+                      if not task.executing() and not task.done() and (node is None or node in self._nodes)
+                      and self.can_execute(task)]
         self._tasks = [entry for entry in self._tasks if not entry[0].done()]
         self._guard_triggered = False
+        if not clock_is_work:
+            for node in self._nodes:
+                node._time_source.apply_clock()
+        for node in list(self._nodes):
+            work += [(w, "waitable", node) for w in node._waitables if self.can_execute(w) and w.is_ready(None)]
         for node in list(self._nodes):
             source = node._time_source
-            if not clock_is_work:
-                source.apply_clock()
             work += [(t, "timer", node) for t in node._timers if self.can_execute(t) and t.is_ready()]
             # a MultiThreadedExecutor's queued /clock job, not yet run by a worker, is not work again
             if clock_is_work and source.clock_pending() and self.can_execute(source):
@@ -161,7 +174,8 @@ class Executor:
             if any(s.has_message() and self.can_execute(s) for s in node._subscriptions) \
                     or any(g._triggered and self.can_execute(g) for g in node._guards) \
                     or any(c.has_response() and self.can_execute(c) for c in node._clients) \
-                    or any(s.has_request() and self.can_execute(s) for s in node._services):
+                    or any(s.has_request() and self.can_execute(s) for s in node._services) \
+                    or any(w.is_ready(None) and self.can_execute(w) for w in node._waitables):
                 return True
         return False
 
@@ -229,6 +243,8 @@ class Executor:
             return entity.has_request()
         if kind == "guard":
             return entity._triggered
+        if kind == "waitable":
+            return entity.is_ready(None)
         return True
 
     # -- running ----------------------------------------------------------------------------------------------------
@@ -259,7 +275,25 @@ class Executor:
         if kind == "service":
             request, header = entity.take_request()
             return lambda: entity.send_response(entity.callback(request, entity.srv_type.Response()), header)
+        if kind == "waitable":
+            return self._waitable_task(entity, node)
         return None
+
+    def _waitable_task(self, waitable, node):
+        """Take a waitable's data now; its coroutine runs as a task, resumed later when it awaits (rclpy's
+        handler), and its futures' done callbacks become this executor's tasks."""
+        data = waitable.take_data()
+        for future in waitable._futures:
+            future._set_executor(self)
+        task = Task(waitable.execute, (data,), executor=self)
+
+        def run() -> None:
+            task()
+            if not task.done():
+                self._tasks.append((task, waitable, node))
+            elif task.exception() is not None:
+                raise task.exception()
+        return run
 
     def _run(self, item, call) -> None:
         """Run one callback inside its callback group."""

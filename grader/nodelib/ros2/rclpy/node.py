@@ -172,7 +172,9 @@ class Node:
             current.remove_node(self)
         if new_executor is None:
             self._executor_ref = None
-        elif new_executor.add_node(self):
+        else:
+            # add_node sets this property again, so it returns False here: the reference is kept either way
+            new_executor.add_node(self)
             self._executor_ref = weakref.ref(new_executor)
 
     def _wake_executor(self) -> None:
@@ -353,6 +355,15 @@ class Node:
             raise ValueError("frequency must be > 0")
         timer = self.create_timer(1.0 / frequency, None, self._rate_group, clock)
         return Rate(timer, context=self._context)
+
+    def add_waitable(self, waitable) -> None:
+        """Have executors spinning this node wait on ``waitable`` (an action server or client adds itself)."""
+        self._waitables.append(waitable)
+        self._wake_executor()
+
+    def remove_waitable(self, waitable) -> None:
+        self._waitables.remove(waitable)
+        self._wake_executor()
 
     def _destroy(self, entity, entities: list) -> bool:
         if entity in entities:
