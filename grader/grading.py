@@ -11,12 +11,12 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from grader import timing
-from grader.interfaces import run_interfaces
+from grader.interfaces import InterfaceSet, run_interfaces
 from grader.launch import LaunchError, find_packages, read_launch, turtlesim
 from grader.launch.specs import node_specs
 from grader.recording import Recording, RecordingError
 from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
-from grader.rubric import GRADER_NODES, Node, Rubric, load_rubrics
+from grader.rubric import GRADER_NODES, Node, Rubric, Scenario, load_rubrics
 from grader.rubricfile import RubricFile, load_rubric_files, stamp
 from grader.runtime import NodeSpec, RunSpec, ScriptNotFound, check_script, find_script
 from grader.runtime.client_library import (
@@ -39,6 +39,35 @@ __all__ = ["GradedSubmission", "SubmissionError", "grade_as_data", "grade_submis
 STAGE_WAIT_S = 5.0  # longest wait for a killed grading of the same submission to release its unpack folder
 
 Progress = Callable[[str], None]
+# A rubric's service type spelled "*/srv/<Name>" is the submission's own srv <Name>, in whichever of its packages
+# generates it: the student calls it by their own package's name (`ros2 service call ... part4_services/srv/...`).
+OWN_TYPE = "*/"
+
+
+class _NoOwnType(Exception):
+    """The task names a type of the submission's own that no package of it generates."""
+
+
+def _own_type(name: str, interfaces: InterfaceSet | None) -> str:
+    """``name``, or for "*/srv/<Name>" the submission's own srv of that name (the first package's, by name)."""
+    if not name.startswith(OWN_TYPE):
+        return name
+    wanted = name[len(OWN_TYPE):]
+    owners = sorted(t for t in (interfaces.services if interfaces else {}) if t.split("/", 1)[-1] == wanted)
+    if not owners:
+        kind, _, base = wanted.partition("/")
+        raise _NoOwnType(f"no package in your submission generates the {kind} type {base} this task calls: write "
+                         f"{wanted}.{kind} in your package and list \"{wanted}.{kind}\" in rosidl_generate_interfaces() "
+                         "in its CMakeLists.txt")
+    return owners[0]
+
+
+def _with_own_types(scenario: Scenario, nodes: tuple[NodeSpec, ...], interfaces: InterfaceSet | None,
+                    ) -> tuple[Scenario, tuple[NodeSpec, ...]]:
+    """The scenario's calls and the nodes' arguments with every "*/srv/<Name>" made the submission's own type."""
+    calls = [call.model_copy(update={"type": _own_type(call.type, interfaces)}) for call in scenario.service_calls]
+    nodes = tuple(replace(spec, args=tuple(_own_type(arg, interfaces) for arg in spec.args)) for spec in nodes)
+    return scenario.model_copy(update={"service_calls": calls}), nodes
 
 
 def _script_names(node: Node) -> list[str]:
@@ -188,9 +217,15 @@ def _plan_task(folder: Path, rubric: Rubric, out_dir: Path) -> _TaskPlan | TaskR
     task_dir.mkdir(parents=True)
     interfaces = run_interfaces(read_workspace(folder), nodes[0].flavour) if nodes and folder.is_dir() else None
     findings = findings + (interfaces.findings if interfaces else [])
-    runs = [Run(RunSpec(scenario=scenario, nodes=_typed(nodes, scenario.stdin), limits=rubric.limits,
+    try:
+        typed = [_with_own_types(scenario, nodes, interfaces) for scenario in rubric.scenarios]
+    except _NoOwnType as exc:
+        return TaskReport(id=rubric.id, title=rubric.title, status="error", max_score=rubric.max_score,
+                          diagnostics=findings, message=str(exc))
+    runs = [Run(RunSpec(scenario=scenario, nodes=_typed(scenario_nodes, scenario.stdin), limits=rubric.limits,
                         name=scenario.name, interfaces=interfaces),
-                task_dir / f"{scenario.name}.mcap", task_dir / f"{scenario.name}.log") for scenario in rubric.scenarios]
+                task_dir / f"{scenario.name}.mcap", task_dir / f"{scenario.name}.log")
+            for scenario, scenario_nodes in typed]
     return _TaskPlan(rubric, nodes, findings, runs)
 
 

@@ -1,10 +1,12 @@
 """The number_game task end to end: the grader plays the student's number game server (COM2009 Part 4, its own
 MyNumberGame interface in an ament_cmake package) with calls fixed in advance; the reference earns full marks, its
 recording holds the grader's requests and the server's responses (the secret it drew is the same every run), re-scores
-identically (`rosgrade score` too) and repeats bit for bit."""
+identically (`rosgrade score` too) and repeats bit for bit. The grader calls the type of the student's own package,
+whatever its name, and says what to write when none generates MyNumberGame."""
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 
 import pytest
@@ -63,3 +65,30 @@ def test_the_recording_rescores_identically_and_repeats_bit_for_bit(reference, t
         [(c.id, c.score, c.feedback) for c in reference.criteria]
     second = grade_submission(PACKAGE, tmp_path, ["number_game"]).tasks[0]
     assert Path(second.recordings[0]).read_bytes() == Path(reference.recordings[0]).read_bytes()
+
+
+def _renamed(tmp_path: Path, name: str) -> Path:
+    """The reference package under another name, its scripts importing their srv from it."""
+    package = tmp_path / "src" / name
+    shutil.copytree(PACKAGE, package)
+    for path in [package / "CMakeLists.txt", package / "package.xml", *package.glob("scripts/*.py")]:
+        path.write_text(path.read_text().replace("part4_services", name))
+    return tmp_path / "src"
+
+
+def test_a_package_of_another_name_is_called_with_its_own_type(reference, tmp_path):
+    task = grade_submission(_renamed(tmp_path, "my_services"), tmp_path / "out", ["number_game"]).tasks[0]
+    assert task.score == task.max_score, task.message or {c.id: c.feedback for c in task.criteria}
+    requests = {i.type for i in Recording.open(task.recordings[0]).topics() if i.topic.endswith("/request")}
+    assert requests == {"my_services/srv/MyNumberGame_Request"}
+
+
+def test_a_submission_that_generates_no_mynumbergame_is_told_what_to_write(tmp_path):
+    src = _renamed(tmp_path, "part4_services")
+    cmake = src / "part4_services" / "CMakeLists.txt"
+    cmake.write_text(cmake.read_text().replace('  "srv/MyNumberGame.srv"\n', ""))
+    task = grade_submission(src, tmp_path / "out", ["number_game"]).tasks[0]
+    assert task.status == "error" and task.score == 0
+    assert task.message == ("no package in your submission generates the srv type MyNumberGame this task calls: write "
+                            "srv/MyNumberGame.srv in your package and list \"srv/MyNumberGame.srv\" in "
+                            "rosidl_generate_interfaces() in its CMakeLists.txt")
