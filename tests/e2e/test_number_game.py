@@ -2,7 +2,8 @@
 MyNumberGame interface in an ament_cmake package) with calls fixed in advance; the reference earns full marks, its
 recording holds the grader's requests and the server's responses (the secret it drew is the same every run), re-scores
 identically (`rosgrade score` too) and repeats bit for bit. The grader calls the type of the student's own package,
-whatever its name, and says what to write when none generates MyNumberGame."""
+whatever its name, and says what to write when none generates MyNumberGame; the course's server template, which logs
+its service's name from get_service_names_and_types(), runs as it does on ROS 2."""
 from __future__ import annotations
 
 import json
@@ -92,3 +93,17 @@ def test_a_submission_that_generates_no_mynumbergame_is_told_what_to_write(tmp_p
     assert task.message == ("no package in your submission generates the srv type MyNumberGame this task calls: write "
                             "srv/MyNumberGame.srv in your package and list \"srv/MyNumberGame.srv\" in "
                             "rosidl_generate_interfaces() in its CMakeLists.txt")
+
+
+def test_the_course_templates_service_name_line_is_logged_as_on_ros2(tmp_path):
+    src = _renamed(tmp_path, "part4_services")
+    script = src / "part4_services" / "scripts" / "my_number_game.py"
+    text = script.read_text()
+    line = 'self.get_logger().info("The \'/guess_the_number\' service is active.")'
+    assert line in text
+    script.write_text(text.replace(line, 'self.get_logger().info(\n            '
+                                   'f"The \'{self.get_service_names_and_types()[0][0]}\' service is active.")'))
+    task = grade_submission(src, tmp_path / "out", ["number_game"]).tasks[0]
+    assert task.score == task.max_score, task.message or {c.id: c.feedback for c in task.criteria}
+    said = [text for _, stream, text in Recording.open(task.recordings[0]).output_lines() if stream == "rosout"]
+    assert said[0] == "The '/guess_the_number' service is active."

@@ -429,6 +429,15 @@ class Node:
             topics.setdefault(topic, set()).add(_ros2_type(type_name))
         return [(topic, sorted(types)) for topic, types in sorted(topics.items())]
 
+    def get_service_names_and_types(self) -> list[tuple[str, list[str]]]:
+        """This node's services, its parameter services included, sorted by name as rcl gives them (the services of
+        the run's other nodes are not known to a node here). COM2009's number_game.py logs the first one's name."""
+        self.handle
+        services: dict[str, set[str]] = {}
+        for service in self._services:
+            services.setdefault(service.srv_name, set()).add(_graph.type_of(service.srv_type)[0])
+        return [(name, sorted(types)) for name, types in sorted(services.items())]
+
     def get_node_names(self) -> list[str]:
         return [self._name]
 
