@@ -141,6 +141,28 @@ class ParamSetSpec(_Model):
         return seconds_to_ns(self.t)
 
 
+class ActionGoalSpec(_Model):
+    """An action goal the grader sends at ``t`` seconds after the start, as ``ros2 action send_goal <action> <type>
+    <goal>`` would: it waits for the action's server, sends the goal and, once accepted, waits for its result; with
+    ``cancel_at``, Ctrl+C then cancels the goal if it has not ended (``ros2 action send_goal``'s own cancel). ``type``
+    is ``pkg/action/Name``; ``goal`` gives the fields of its Goal. Goals run side by side, each as its own command."""
+
+    t: NonNegative
+    action: Annotated[str, Field(pattern=r"^/[A-Za-z0-9_/]+$")]
+    type: Annotated[str, Field(pattern=r"^[A-Za-z0-9_]+/action/[A-Za-z0-9_]+$")]
+    goal: dict[str, JsonValue] = Field(default_factory=dict)
+    cancel_at: NonNegative | None = None
+
+    @property
+    def t_ns(self) -> int:
+        """``t`` in integer nanoseconds (relative to the start)."""
+        return seconds_to_ns(self.t)
+
+    @property
+    def cancel_ns(self) -> int | None:
+        return None if self.cancel_at is None else seconds_to_ns(self.cancel_at)
+
+
 class Scenario(_Model):
     """One run: the world starts at ``start_time`` (it has been running since 0) and lasts ``duration`` seconds after it."""
 
@@ -160,6 +182,8 @@ class Scenario(_Model):
                                                  description="service calls the grader makes, in time order")
     param_sets: list[ParamSetSpec] = Field(default_factory=list,
                                            description="ROS 2 parameters the grader sets, in time order")
+    action_goals: list[ActionGoalSpec] = Field(default_factory=list,
+                                               description="ROS 2 action goals the grader sends, in time order")
     command_types: list[str] | None = Field(
         None, description="velocity command types the robot's base takes, e.g. ['geometry_msgs/Twist', "
         "'geometry_msgs/TwistStamped']; None: what the run's client library's robot takes (ROS 1: Twist; "
@@ -183,7 +207,11 @@ class Scenario(_Model):
         for i, (earlier, later) in enumerate(zip(times, times[1:]), start=1):
             if later < earlier:
                 raise ValueError(f"script[{i}].t = {later} s comes before script[{i - 1}].t = {earlier} s; expected times in order")
-        for field_name in ("service_calls", "param_sets"):
+        for goal in self.action_goals:
+            if goal.cancel_at is not None and not goal.t < goal.cancel_at <= self.duration:
+                raise ValueError(f"action_goals: a goal sent at {goal.t} s is cancelled at {goal.cancel_at} s; "
+                                 "expected a later time within the run's duration")
+        for field_name in ("service_calls", "param_sets", "action_goals"):
             calls = [call.t for call in getattr(self, field_name)]
             if calls != sorted(calls) or (calls and calls[-1] > self.duration):
                 raise ValueError(f"{field_name} must come in time order, within the run's duration")

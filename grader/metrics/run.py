@@ -9,6 +9,8 @@ from typing import Any, Literal
 
 import numpy as np
 
+from grader.metrics.action_record import ActionGoal, action_goals
+
 DRIVER_CALLERID = "/rosgrade_driver"  # the grader's scripted driver; its commands are not the student's
 TURTLE_POSE_TOPIC = "/turtle1/pose"  # turtlesim's pose of turtle1 (turtlesim/Pose), its only odometry
 TURTLE_POSE_TYPE = "turtlesim/Pose"
@@ -172,6 +174,7 @@ class RunData:
     poses: dict[str, Trajectory] = field(default_factory=dict)  # turtlesim: each turtle's pose topic → its poses
     service_calls: tuple[ServiceCall, ...] = ()  # in the order they were served
     param_changes: tuple[ParamChange, ...] = ()  # in the order they were made (none: a recording without them)
+    action_goals: tuple[ActionGoal, ...] = ()  # the grader's, in the order sent (grader/metrics/action_record.py)
     client_library: str = "rospy"  # the node's, as the recording says: "rospy" or "rclpy"
     # Velocity command types nodes published on the robot's command topics that its base does not take
     # (a Twist to the Jazzy TurtleBot3, which drives on TwistStamped), comma-separated.
@@ -208,6 +211,7 @@ class RunData:
             service_calls=tuple(call for call in self.service_calls if call.t < end),
             # The first change is the tree the run started with, whenever it was recorded.
             param_changes=tuple(c for c in self.param_changes if c.t < end or c is self.param_changes[0]),
+            action_goals=tuple(goal for goal in self.action_goals if goal.t < end),
         )
 
     def shutdown_time(self) -> float | None:
@@ -232,6 +236,7 @@ class RunData:
             poses=turtle_poses(recording),
             service_calls=calls,
             param_changes=params,
+            action_goals=action_goals(recording),
             client_library=_client_library(recording),
             ignored_command_types=_ignored_command_types(recording),
             command_type=_command_type(recording),

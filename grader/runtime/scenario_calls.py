@@ -1,6 +1,7 @@
 """The grader as a caller: a scenario's service calls and parameter sets, made at their sim times through the run's
 service routing, one after the other, as a script of ``ros2 service call`` and ``ros2 param set`` commands would (for
-ROS 1 nodes a set is ``rosparam set`` on the run's parameter server, which the node reads again when it asks)."""
+ROS 1 nodes a set is ``rosparam set`` on the run's parameter server, which the node reads again when it asks); its
+action goals beside them, each as its own ``ros2 action send_goal`` (scenario_goals.py)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -11,6 +12,7 @@ from grader.recording import RecordingError
 from grader.runtime.node_link import ServiceCall
 from grader.runtime.param_server import GRADER, ParamServer
 from grader.runtime.services import Caller, ServiceRouteError, ServiceRouter
+from grader.runtime.scenario_goals import GoalSender, PlannedGoal
 from grader.runtime.wire import Wire
 from sim.scenario import ParamSetSpec, ServiceCallSpec
 
@@ -87,8 +89,9 @@ class ScenarioCaller:
     and goes out when a node offers it."""
 
     def __init__(self, calls: list[PlannedCall], start_ns: int, router: ServiceRouter,
-                 params: ParamServer | None = None) -> None:
+                 params: ParamServer | None = None, goals: list[PlannedGoal] = ()) -> None:
         self._calls = [(start_ns + planned.t_ns, planned) for planned in calls]
+        self._goals = [GoalSender(goal, start_ns, router) for goal in goals]
         self._params = params
         self._next = 0
         self._busy = False  # a call is out and not answered yet
@@ -96,15 +99,20 @@ class ScenarioCaller:
         router.on_offer.append(self.tick)
 
     def next_ns(self) -> int | None:
-        """When the loop must stop for the next call (None: none, or it waits for an answer or a server)."""
-        if self._busy or self._next >= len(self._calls):
-            return None
-        due, planned = self._calls[self._next]
-        return due if planned.param is not None or self._router.server(planned.call.service) is not None else None
+        """When the loop must stop for the next call or goal request (None: none, or they wait for answers or
+        servers)."""
+        times = [due for goal in self._goals if (due := goal.next_ns()) is not None]
+        if not self._busy and self._next < len(self._calls):
+            due, planned = self._calls[self._next]
+            if planned.param is not None or self._router.server(planned.call.service) is not None:
+                times.append(due)
+        return min(times, default=None)
 
     def tick(self, t: int) -> None:
         """Make the next call if it is due at t and its service is offered; a ROS 1 set is made at once (it reaches
-        each node in its next BATCH), and what follows it may go out at t too."""
+        each node in its next BATCH), and what follows it may go out at t too; then the goals' requests due at t."""
+        for goal in self._goals:
+            goal.tick(t)
         while not self._busy and self._next < len(self._calls):
             due, planned = self._calls[self._next]
             if due > t:
@@ -118,6 +126,6 @@ class ScenarioCaller:
             self._busy = True
             self._router.call(Caller(CALLER_ID, "grader", done=self._answered), planned.call, t)
 
-    def _answered(self, status: str, error: str, response: bytes) -> None:
+    def _answered(self, status: str, error: str, response: bytes, t: int) -> None:
         self._busy = False
         self._next += 1

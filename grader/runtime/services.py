@@ -28,14 +28,14 @@ class ServiceRouteError(Exception):
 @dataclass(frozen=True)
 class Caller:
     """Who made a call: a node (its index, the client handle and call number its answer goes to), or the grader
-    (``done`` gets the status, the server's error text and the response bytes)."""
+    (``done`` gets the status, the server's error text, the response bytes and the answer's time)."""
 
     callerid: str
     origin: str
     node: int | None = None
     ident: int = 0
     seq: int = 0
-    done: Callable[[str, str, bytes], None] | None = None
+    done: Callable[[str, str, bytes, int], None] | None = None
 
 
 class _NodeServer:
@@ -166,6 +166,6 @@ class ServiceRouter:
             self.record(f"{SERVICE_PREFIX}{service}/error", self.wire.string_type, self.wire.string(text), t,
                         callerid=callerid, origin=origin)
         if caller.done is not None:
-            caller.done(reply.status, reply.error, reply.response)
+            caller.done(reply.status, reply.error, reply.response, t)
         elif caller.node is not None:
             self.deliver(caller.node, (caller.ident, reply.response, (caller.seq, reply.status, reply.error)))

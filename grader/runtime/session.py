@@ -31,6 +31,7 @@ from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, 
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.scenario_calls import ScenarioCaller, planned_calls
+from grader.runtime.scenario_goals import planned_goals
 from grader.runtime.services import Caller, ServiceRouteError, ServiceRouter
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
@@ -193,6 +194,7 @@ class Session:
         self.caller: ScenarioCaller | None = None  # the scenario's own service calls
         try:
             self._calls = planned_calls(spec.scenario.service_calls, self.wire, spec.scenario.param_sets)
+            self._goals = planned_goals(spec.scenario.action_goals, self.wire)
         except ServiceRouteError as exc:
             raise RunError(str(exc)) from None
 
@@ -228,7 +230,7 @@ class Session:
             self.services = ServiceRouter(self.wire, self.world, rec.write,
                                           lambda index, item: self.nodes[index].deliveries.append(item),
                                           self._world_sample, self._take_declarations)
-            self.caller = ScenarioCaller(self._calls, self.start_ns, self.services, self.params)
+            self.caller = ScenarioCaller(self._calls, self.start_ns, self.services, self.params, self._goals)
             try:
                 with timing.stage("node start-up", absorb=True):
                     for node in list(self.nodes):
