@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from grader.metrics import exact
+from grader import exact
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
 from grader.metrics.motion import first_motion, path_length
 from grader.metrics.run import Commands, RunData
@@ -63,7 +63,7 @@ def fit_circle(x: np.ndarray, y: np.ndarray, iterations: int = 30) -> CircleFit:
     if not all(math.isfinite(val) for val in (cx, cy, r)):
         raise MetricError("the path is not curved enough to fit a circle")
     d = np.hypot(u - cx, v - cy)
-    angles = np.unwrap(np.arctan2(v - cy, u - cx))
+    angles = np.unwrap(exact.atan2(v - cy, u - cx))
     return CircleFit(
         cx=float(cx + mx), cy=float(cy + my), radius=float(abs(r)),
         rms=math.sqrt(exact.mean((d - abs(r)) ** 2)),

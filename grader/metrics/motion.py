@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from grader.metrics import exact
+from grader import exact
 from grader.metrics.run import Trajectory
 
 

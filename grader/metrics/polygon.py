@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from grader.metrics import exact
+from grader import exact
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
 from grader.metrics.motion import speeds, wrap
 from grader.metrics.run import RunData, Trajectory

