@@ -16,6 +16,10 @@ STATUS_NAMES = {0: "UNKNOWN", 1: "ACCEPTED", 2: "EXECUTING", 3: "CANCELING", 4: 
                 6: "ABORTED"}
 
 
+def _name(status: int | None) -> str:
+    return "no status" if status is None else STATUS_NAMES.get(status, str(status))
+
+
 class Params(MetricParams):
     """Which of the grader's goals (0: the first it sent), the status it should end in and the result fields
     expected (numbers within ``tolerance``)."""
@@ -39,6 +43,8 @@ def measure(run: RunData, params: Params) -> Measurement:
     field = got = want = ""
     if goal.result is None:
         wrong = "no result came back"
+    elif final != params.expected_status:
+        wrong = f"the goal ended {_name(final)}, expected {_name(params.expected_status)}"
     else:
         for name, value in params.expected_result.items():
             if name not in goal.result or not _matches(goal.result[name], value, params.tolerance):
@@ -50,9 +56,9 @@ def measure(run: RunData, params: Params) -> Measurement:
         "n_feedback": len(feedback),
         "feedback_rate_hz": (len(feedback) - 1) / span if span > 0 else math.nan,
         "final_status": -1 if final is None else final,
-        "status_name": "none" if final is None else STATUS_NAMES.get(final, str(final)),
+        "status_name": _name(final),
         "status_as_expected": 1.0 if final == params.expected_status else 0.0,
-        "result_correct": 1.0 if not wrong and final == params.expected_status else 0.0,
+        "result_correct": 0.0 if wrong else 1.0,
         "first_wrong": wrong,
         "wrong_field": field,
         "wrong_value": got,

@@ -13,6 +13,7 @@ from number_game_synth import play, scenario_requests
 from scoring_synth import Segment, commands, path, run, square_segments
 
 from grader.metrics import OutputLine, RunData, RunInfo
+from grader.metrics.action_record import ActionGoal
 from grader.metrics.run import ServiceCall
 from grader.metrics.motion import wrap
 from grader.metrics.wall_hits import WARNING
@@ -174,7 +175,7 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     assert every == {(t, c) for t, c, _ in CRITERIA} | shutdown
     assert {c for _, c in shutdown} == {"shutdown_stop"}
     assert set(RUBRICS) - set(DRIVING_TASKS) == {  # compared on their own below
-        "add_two_ints", "param_circle", "number_game", "number_game_client"}
+        "add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci"}
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:
@@ -327,3 +328,30 @@ def test_ctrl_c_after_the_stretches_changes_no_radius_follows_credit() -> None:
                                if c.id == "radius_follows") for ctrl_c in (False, True))
     assert plain.score == plain.max_score, plain.feedback
     assert interrupted.score == plain.score, interrupted.feedback
+
+
+def _fibonacci(ctrl_c: bool) -> dict[str, RunData]:
+    """A cancel-aware Fibonacci server: order 5 succeeds after four feedbacks, order 10 ends CANCELED after the
+    grader's cancel; with Ctrl+C at the end, a goal sent after it is never accepted."""
+    runs = {}
+    for s in RUBRICS["fibonacci"].scenarios:
+        t0, end = s.start_time, s.duration
+        goals = [ActionGoal(t0 + 0.5, "/fibonacci", {"order": 5}, True, tuple(t0 + 0.5 + k for k in range(4)), (2, 4),
+                            4, {"sequence": [0, 1, 1, 2, 3, 5]}),
+                 ActionGoal(t0 + 5.5, "/fibonacci", {"order": 10}, True, (t0 + 5.5, t0 + 6.5), (2, 3, 5), 5,
+                            {"sequence": []}, t0 + 7.0, 0)]
+        late = [ActionGoal(t0 + end + 0.5, "/fibonacci", {"order": 3})] if ctrl_c else []
+        data = run([(end + (AFTER_S if ctrl_c else 0.0), 0.0, 0.0)], t0=t0,
+                   info=RunInfo(shutdown_requested_s=t0 + end if ctrl_c else None), shutdown_at=end if ctrl_c else None)
+        runs[s.name] = replace(data, action_goals=tuple(goals + late))
+    return runs
+
+
+@pytest.mark.parametrize("criterion", [c.id for c in RUBRICS["fibonacci"].criteria])
+def test_ctrl_c_after_the_goals_changes_no_fibonacci_credit(criterion: str) -> None:
+    plain, interrupted = (next(c for c in score_task(RUBRICS["fibonacci"], _fibonacci(ctrl_c)).criteria
+                               if c.id == criterion) for ctrl_c in (False, True))
+    assert plain.score == plain.max_score, plain.feedback
+    assert interrupted.score == plain.score and interrupted.measured["judged_until_ctrl_c"]
+    assert {k: v for k, v in interrupted.measured.items() if k != "judged_until_ctrl_c"} == {
+        k: v for k, v in plain.measured.items() if k != "judged_until_ctrl_c"}

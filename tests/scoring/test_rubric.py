@@ -31,6 +31,7 @@ CONTRACT = {
     "param_circle": ["radius_follows", "shutdown_stop"],
     "number_game": ["serves", "hints", "counts_guesses", "cheat", "correct_guess"],
     "number_game_client": ["sends_request", "reports_response"],
+    "fibonacci": ["accepts_goal", "feedback", "result", "cancel_stops"],
 }
 
 MINIMAL = '''
