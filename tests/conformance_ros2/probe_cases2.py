@@ -1,8 +1,9 @@
 """The ROS 2 conformance probes: how each is run, and the behaviour from the measured reference each must show.
 
-Expected lines come from /work/shared/reference/rclpy-behaviour.md and were measured again with real_ros2.py (real
-rclpy 9.1.2, Fast DDS); they are in normalised form (conformance_compare2.normalise): ``[INFO] [<wall>] [name]: ``,
-``<probe>/pNN_x.py``, ``<library frames>``, ``0xADDR``. `volatile` patterns drop lines real ROS 2 prints
+Expected lines come from /work/shared/reference/rclpy-behaviour.md and were measured again with real_ros2.py (Jazzy's
+real rclpy 7.1.6 from PyPI's ros-jazzy-* wheels, Fast DDS); they are in normalised form
+(conformance_compare2.normalise): ``[INFO] [<wall>] [name]: ``, ``<probe>/pNN_x.py``, ``<library frames>``,
+``0xADDR``. `volatile` patterns drop lines real ROS 2 prints
 differently from run to run; `commands` are the facts about /cmd_vel from conformance_compare2.summarise_commands.
 """
 from __future__ import annotations
@@ -12,7 +13,7 @@ from pathlib import Path
 
 PROBES_DIR = Path(__file__).resolve().parent / "probes"
 SIM_TIME = ("--ros-args", "-p", "use_sim_time:=true")
-CONTEXT_INVALID = "publisher's context is invalid, at /project/src/rcl/publisher.c:427"
+CONTEXT_INVALID = "publisher's context is invalid, at /project/src/rcl/publisher.c:423"
 RCL_ERROR = "rclpy._rclpy_pybind11.RCLError"
 NOT_INIT = "rclpy.exceptions.NotInitializedException: rclpy.init() has not been called. msg:cannot create node"
 
@@ -45,7 +46,8 @@ CASES = [
         f"publish zero in finally !! {RCL_ERROR}: Failed to publish: {CONTEXT_INVALID}",
         "destroy_node -> None",
         "rclpy.ok() after destroy_node -> False",
-        "rclpy.shutdown -> None",
+        f"rclpy.shutdown !! {RCL_ERROR}: failed to shutdown: rcl_shutdown already called on the given context, at "
+        "/project/src/rcl/init.c:333",
         "rclpy.try_shutdown -> None",
         "end",
     ), stderr=(
@@ -56,7 +58,9 @@ CASES = [
         "before Ctrl+C: all non-zero True, on the 0.1 s grid True",
         "after Ctrl+C: zero command arrived False",
         "after Ctrl+C: non-zero command arrived False",
-        # rclpy's signal thread races the KeyboardInterrupt: ok() in the except block is False 7 times in 8.
+        # rclpy's signal thread races the KeyboardInterrupt: ok() in the except block was False 7 times in 8 under
+        # Kilted and 4 times in 6 under Jazzy, where the publish in the except block then succeeds and the zero
+        # arrives (the re-runs cover it; the model is the usual outcome).
     ), volatile=(r"^rclpy\.ok\(\) in except ",)),
     Case("p02_sigint_uncaught", "p02_sigint_uncaught.py", shutdown_at=1.05, exit_code=-2, stderr=(
         "Traceback (most recent call last):",
@@ -90,7 +94,7 @@ CASES = [
     Case("p04_sim_time", "p04_sim_time.py", stdout=(
         "use_sim_time True",
         "now in __init__ Time(nanoseconds=0, clock_type=ROS_TIME)",
-        "clock type ClockType.ROS_TIME",
+        "clock type 1",
         "now after __init__ (no spin yet) 0",
         "first tick has sim time True",
         "second tick on the 0.1 s grid from 0 True and the next grid point True",
@@ -112,7 +116,10 @@ CASES = [
         "Time(seconds=1) - Duration(seconds=3) !! builtins.ValueError: Subtraction leads to negative time.",
         "Time(ROS_TIME) == Time(SYSTEM_TIME) -> True (bool)",
         "Time(seconds=1) < 2 !! builtins.TypeError: '<' not supported between instances of 'Time' and 'int'",
+        "Duration(seconds=2) * 1.5 !! builtins.TypeError: unsupported operand type(s) for *: 'Duration' and 'float'",
         "Duration(seconds=2) > 1 !! builtins.TypeError: '>' not supported between instances of 'Duration' and 'int'",
+        "Duration(seconds=2) + Duration(seconds=1) !! builtins.TypeError: unsupported operand type(s) for +: "
+        "'Duration' and 'Duration'",
         "rclpy.ok() without init -> False (bool)",
     ), stderr_empty=True),
     Case("p06_logging", "p06_logging.py", stdout=(
@@ -134,8 +141,6 @@ CASES = [
         "[INFO] [<wall>] [p06_logging]: multi",
         "line",
         "[INFO] [<wall>] [p06_logging]: returned value",
-        "<probe>/p06_logging.py:40: DeprecationWarning: Deprecated in favor of :py:classmethod:RcutilsLogger.warning:.",
-        '  log.warn("warn() is deprecated")',
         "[WARN] [<wall>] [p06_logging]: warn() is deprecated",
         "[INFO] [<wall>] [p06_logging]: throttled 1 s: call 0",
         "[INFO] [<wall>] [p06_logging]: throttled 1 s: after 1.2 s wall",
@@ -173,9 +178,9 @@ CASES = [
         "rclpy.init() twice !! builtins.RuntimeError: Context.init() must only be called once",
         "node.get_fully_qualified_name() -> '/p08_not_initialized'",
         f"create_timer after shutdown !! {RCL_ERROR}: failed to create timer: the given context is not valid, either "
-        "rcl_init() was not called or rcl_shutdown() was called., at /project/src/rcl/guard_condition.c:65",
+        "rcl_init() was not called or rcl_shutdown() was called., at /project/src/rcl/guard_condition.c:67",
         f"Node('y') after shutdown !! {NOT_INIT}",
-        "rclpy.init() after shutdown -> <rclpy.InitContextManager object at 0xADDR>",
+        "rclpy.init() after shutdown -> None",
     ), stderr=(
         "Traceback (most recent call last):",
         '  File "<probe>/p08_not_initialized.py", line 36, in <module>',
@@ -190,13 +195,30 @@ CASES = [
         "got <class 'str'>",
         f"create_publisher(Twist, '/cmd_vel') !! {RCL_ERROR}: Failed to create publisher: create_publisher() called "
         "for existing topic name rt/cmd_vel with incompatible type geometry_msgs::msg::dds_::Twist_, at "
-        "/project/src/publisher.cpp:145, at /project/src/rcl/publisher.c:118",
+        "/project/src/publisher.cpp:145, at /project/src/rcl/publisher.c:117",
+        f"create_subscription(Twist, '/cmd_vel') !! {RCL_ERROR}: Failed to create subscription: invalid allocator, at "
+        "/project/src/rcl/subscription.c:261",
+        "create_publisher(int, '/x') !! builtins.AttributeError: type object 'type' has no attribute '_TYPE_SUPPORT' "
+        "This might be a ROS 1 message type but it should be a ROS 2 message type. Make sure to source your ROS 2 "
+        "workspace after your ROS 1 workspace.",
         "publish with linear.x = 'fast' -> None",
         "publish with linear.x = None -> None",
         "publish with frame_id = 3 !! builtins.TypeError: bad argument type for built-in operation",
         "publish with twist.linear = 5 !! builtins.AttributeError: 'int' object has no attribute 'x'",
         "end",
-    ), stderr_empty=True, commands=(
+    ), stderr=(
+        # Jazzy's rcl overwrites the incompatible-type error while cleaning up the subscription, and says so.
+        ">>> [rcutils|error_handling.c:108] rcutils_set_error_state()",
+        "This error state is being overwritten:",
+        "  'create_subscription() called for existing topic name rt/cmd_vel with incompatible type "
+        "geometry_msgs::msg::dds_::Twist_, at /project/src/subscription.cpp:517, at "
+        "/project/src/rcl/subscription.c:112'",
+        "with this new error message:",
+        "  'invalid allocator, at /project/src/rcl/subscription.c:261'",
+        "rcutils_reset_error() should be called after error handling to avoid this.",
+        "<<<",
+        "invalid allocator, at /project/src/rcl/subscription.c:261",
+    ), commands=(
         "before Ctrl+C: commands arrived",
         # linear.x of the 'fast' and int publishes is garbage (the C converter reads a float's bytes from another
         # object), so only which publishes arrived is compared.
@@ -241,17 +263,35 @@ CASES = [
     ), stderr_empty=True),
     Case("p13_call_in_callback_single", "p13_call_in_callback.py", args=("single", *SIM_TIME), stdout=(
         "wait_for_service -> True",
-        "call raised TimeoutError",
+        "call returned None",
         "end",
     ), stderr_empty=True),
     Case("p13_call_in_callback_multi", "p13_call_in_callback.py", args=("multi", *SIM_TIME), stdout=(
         "wait_for_service -> True",
-        "call raised TimeoutError",
+        "call returned None",
         "end",
     ), stderr_empty=True),
     Case("p13_call_in_callback_reentrant", "p13_call_in_callback.py", args=("reentrant", *SIM_TIME), stdout=(
         "wait_for_service -> True",
         "call returned success True",
+        "end",
+    ), stderr_empty=True),
+    # An action's goal, feedback, cancel and result (issue 28), as rcl_action builds them from services and topics.
+    Case("p15_actions", "p15_actions.py", duration=12.0, stdout=(
+        "wait_for_server -> True",
+        "goal accepted True",
+        "result SUCCEEDED [0, 1, 1, 2, 3]",
+        "feedback [[0, 1, 1], [0, 1, 1, 2], [0, 1, 1, 2, 3]]",
+        "handle status SUCCEEDED",
+        "cancel return_code 0 canceling 1 same goal True",
+        "result CANCELED handle status CANCELED",
+        "status when cancel requested CANCELING",
+        "cancel again return_code 3 canceling 0",
+        "cancel unknown return_code 2 canceling 0",
+        "negative order accepted False status UNKNOWN",
+        "order 1 SUCCEEDED [0, 1]",
+        "second succeed !! RCLError Failed to update goal state: goal_handle attempted invalid transition from state "
+        "SUCCEEDED with event SUCCEED, at /project/src/rcl_action/goal_handle.c:100",
         "end",
     ), stderr_empty=True),
     # Parameters at run time (issue 28): what `ros2 param set` gets back, accepted (a pre-set callback adding to the
@@ -270,7 +310,7 @@ CASES = [
         "event changed [('radius', 3, 1.2), ('diameter', 3, 2.4)]",
         "event stamped with sim time within 0.4 s before now True",
         "set radius -1.0 -> [(False, 'radius must be positive')]",
-        "set radius 1 -> [(False, \"Wrong parameter type, expected '3' got '2'\")]",
+        "set radius 1 -> [(False, \"Wrong parameter type, expected 'Type.DOUBLE' got 'Type.INTEGER'\")]",
         "set speed 0.3 -> [(False, 'Invalid access to undeclared parameter(s): []')]",
         "set atomically with two undeclared names !! ParameterNotDeclaredException Invalid access to undeclared "
         "parameter(s): ['b', 'c']",

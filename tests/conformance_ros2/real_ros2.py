@@ -1,4 +1,5 @@
-"""Run a probe node under REAL rclpy (PyPI's ROS 2 wheels, Fast DDS) beside a real rclpy robot, for the ROS 2 suite.
+"""Run a probe node under REAL rclpy (Jazzy's, from PyPI's ros-jazzy-* wheels, Fast DDS) beside a real rclpy robot,
+for the ROS 2 suite.
 
 `ros2_env` is the one place that knows what it takes to run rclpy from the venv `.ci/ros2-venv` builds. `RealRos2`
 holds one robot (`real_robot2.py`: /clock at 100 Hz, /odom at 30 Hz, records /cmd_vel) on a DDS domain id of its
@@ -25,7 +26,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-VENV = Path(os.environ.get("ROSGRADE_ROS2_VENV", "/opt/rosgrade-ros2-venv"))
+VENV = Path(os.environ.get("ROSGRADE_ROS2_VENV", "/opt/rosgrade-ros2-jazzy-venv"))
 ROBOT_NODE = Path(__file__).resolve().parent / "real_robot2.py"
 NS = 1_000_000_000
 # Domain ids 1..100 keep Fast DDS's ports (7400 + 250 * id ...) in the ephemeral-free range.

@@ -47,7 +47,8 @@ def main(path: Path, runs: int) -> None:
                        for _ in range(runs)]
             sections.append(_section(case, results))
     head = ("# ROS 2 probes under real rclpy (measured)\n\nWritten by tests/conformance_ros2/record_real_outputs.py: "
-            "real rclpy 9.1.2 (PyPI wheels, Fast DDS) beside real_robot2.py at 1x, each probe run "
+            "Jazzy's real rclpy 7.1.6 (PyPI's ros-jazzy-* wheels, Fast DDS) beside real_robot2.py at 1x, "
+            "each probe run "
             f"{runs} times; outputs normalised as the suite compares them.\n\n")
     path.write_text(head + "\n".join(sections), encoding="utf-8")
 

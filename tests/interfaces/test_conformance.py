@@ -20,7 +20,7 @@ from tests.interfaces.workspaces import package
 
 HERE = Path(__file__).resolve().parent
 EXAMPLE = HERE.parents[1] / "reference_solutions_ros2_cmake"
-VENV = Path(os.environ.get("ROSGRADE_ROS2_VENV", "/opt/rosgrade-ros2-venv"))
+VENV = Path(os.environ.get("ROSGRADE_ROS2_VENV", "/opt/rosgrade-ros2-jazzy-venv"))
 DEBIAN_PYTHON = "/usr/bin/python3"
 
 

@@ -15,7 +15,7 @@ from pathlib import Path
 from grader.nodelib import import_roots, pythonpath
 
 HERE = Path(__file__).resolve().parent
-REAL_VENV = Path(os.environ.get("ROSGRADE_ROS2_VENV", "/opt/rosgrade-ros2-venv"))
+REAL_VENV = Path(os.environ.get("ROSGRADE_ROS2_VENV", "/opt/rosgrade-ros2-jazzy-venv"))
 REAL_PYTHON = REAL_VENV / "bin" / "python"
 
 
@@ -36,7 +36,8 @@ def run_json(args: list[str], **kwargs) -> object:
 def real_venv_reason() -> str | None:
     """Why the real ROS 2 venv cannot be used, or None."""
     if not REAL_PYTHON.exists():
-        return f"no real ROS 2 venv at {REAL_VENV} (set ROSGRADE_ROS2_VENV; .ci installs ros-rclpy and the msgs)"
+        return (f"no real ROS 2 venv at {REAL_VENV} (set ROSGRADE_ROS2_VENV; .ci/ros2-venv installs ros-jazzy-rclpy "
+                "and the msgs)")
     probe = subprocess.run([str(REAL_PYTHON), "-c", "import rclpy.serialization, geometry_msgs.msg, nav_msgs.msg"],
                            capture_output=True, env={"PATH": "/usr/bin:/bin"})
     if probe.returncode != 0:

@@ -16,7 +16,7 @@ Odometry = rosgrade_rosidl.message_class("nav_msgs/msg/Odometry")
 TFMessage = rosgrade_rosidl.message_class("tf2_msgs/msg/TFMessage")
 
 RCL_ERROR = ("rclpy._rclpy_pybind11.RCLError: Failed to publish: publisher's context is invalid, at "
-             "/project/src/rcl/publisher.c:427")
+             "/project/src/rcl/publisher.c:423")
 
 
 def _odom(x: float) -> bytes:
@@ -73,7 +73,7 @@ def test_default_handlers_shut_the_context_down_before_except(default_run):
     assert all(t < 3_000_000_000 for t, _ in default_run.published("/cmd_vel"))
     err = default_run.output(2)
     assert "[move_circle]: Stopping the robot...\nFailed to publish log message to rosout: publisher's context is " \
-           "invalid, at /project/src/rcl/publisher.c:427\n" in err
+           "invalid, at /project/src/rcl/publisher.c:423\n" in err
     assert default_run.returncode == 0 and lines[-1] == "done"
 
 
@@ -127,7 +127,7 @@ def api_run():
     "subscription count: 0",
     "fqn: ('api', '/', '/api')",
     "spin_once(0) waited 0.0",
-    "duration: (Duration(nanoseconds=1500000005), Duration(nanoseconds=500000000))",
+    "duration: builtins.TypeError: unsupported operand type(s) for +: 'Duration' and 'Duration'",  # Jazzy's
     "publish after destroy: rclpy._rclpy_pybind11.InvalidHandle: cannot use Destroyable because destruction was "
     "requested",
     "ok after shutdown: False",
@@ -147,7 +147,7 @@ def test_logging_filters_levels_and_deprecated_warn(api_run):
     assert "once 0" in err and "once 1" not in err
     assert "skip 0" not in err and "skip 1" in err and "skip 2" in err
     assert "hidden debug" not in err
-    assert "DeprecationWarning: Deprecated in favor of :py:classmethod:RcutilsLogger.warning:." in err
+    assert "DeprecationWarning" not in err  # Jazzy's warn() is deprecated in its docstring only
     assert "[WARN] [" in err and "[api]: old warn" in err
 
 
@@ -195,17 +195,16 @@ def test_sleep_for_on_sim_time_wakes_at_the_tick_a_spinning_thread_applies(edge_
     assert "sleep_for True 300000000" in edge_run.lines()
 
 
-def test_clock_type_prints_as_rclpys_pybind11_enum(edge_run):
-    assert "clock type ClockType.ROS_TIME ClockType.ROS_TIME" in edge_run.lines()
+def test_clock_type_prints_as_jazzys_int_enum(edge_run):
+    assert "clock type 1 1" in edge_run.lines()
 
 
 @pytest.mark.parametrize("line", [
     "second type publisher: rclpy._rclpy_pybind11.RCLError: Failed to create publisher: create_publisher() called "
     "for existing topic name rt/cmd_vel with incompatible type geometry_msgs::msg::dds_::Twist_, at "
-    "/project/src/publisher.cpp:145, at /project/src/rcl/publisher.c:118",
-    "second type subscription: rclpy._rclpy_pybind11.RCLError: Failed to create subscription: create_subscription() "
-    "called for existing topic name rt/cmd_vel with incompatible type geometry_msgs::msg::dds_::Twist_, at "
-    "/project/src/subscription.cpp:526, at /project/src/rcl/subscription.c:116",
+    "/project/src/publisher.cpp:145, at /project/src/rcl/publisher.c:117",
+    "second type subscription: rclpy._rclpy_pybind11.RCLError: Failed to create subscription: invalid allocator, at "
+    "/project/src/rcl/subscription.c:261",
     "same type again: '/cmd_vel'",
     "other type once the topic is free: '/cmd_vel'",
 ])
@@ -220,7 +219,7 @@ def test_the_nodes_own_topics_take_their_type(edge_run, topic):
 
 
 @pytest.mark.parametrize("line", [
-    "int type: builtins.AttributeError: type object 'int' has no attribute '_TYPE_SUPPORT' This might be a ROS 1 "
+    "int type: builtins.AttributeError: type object 'type' has no attribute '_TYPE_SUPPORT' This might be a ROS 1 "
     "message type but it should be a ROS 2 message type. Make sure to source your ROS 2 workspace after your ROS 1 "
     "workspace.",
     "service as message: builtins.RuntimeError: The message type provided is not valid "
@@ -235,7 +234,7 @@ def test_classes_without_type_support_fail_as_in_rclpy(edge_run, line):
 def test_bad_node_name_warns_once_about_the_rosout_publisher(edge_run):
     err = edge_run.output(2)
     warning = ("RuntimeWarning: Failed to fini rosout publisher: rcl node implementation is invalid, at "
-               "/project/src/rcl/node.c:387")
+               "/project/src/rcl/node.c:390")
     assert err.count(warning) == 1 and "node.py:" in err.split(warning)[0]
 
 
@@ -243,4 +242,4 @@ def test_create_timer_after_shutdown_is_an_rcl_error_of_the_context(edge_run):
     assert edge_run.lines()[-1] == (
         "timer after shutdown: rclpy._rclpy_pybind11.RCLError: failed to create timer: the given context is not "
         "valid, either rcl_init() was not called or rcl_shutdown() was called., at "
-        "/project/src/rcl/guard_condition.c:65")
+        "/project/src/rcl/guard_condition.c:67")

@@ -46,12 +46,13 @@ def test_seconds_nanoseconds_and_messages():
 
 
 def test_duration_arithmetic_and_infinite():
-    assert Duration(seconds=1) * 2 == Duration(seconds=2)
-    assert Duration(seconds=1) * float("inf") is Infinite
+    """Jazzy's Duration compares but has no arithmetic of its own (Kilted added +, - and *)."""
     assert str(Infinite) == "Infinite" and str(Duration(nanoseconds=3)) == "3 nanoseconds"
     assert Duration(seconds=1) > Duration(nanoseconds=999_999_999)
-    with pytest.raises(ValueError, match="Can't multiply duration with nan"):
-        Duration(seconds=1) * float("nan")
+    with pytest.raises(TypeError, match=r"unsupported operand type\(s\) for \*: 'Duration' and 'int'"):
+        Duration(seconds=1) * 2
+    with pytest.raises(TypeError, match=r"unsupported operand type\(s\) for \+: 'Duration' and 'Duration'"):
+        Duration(seconds=1) + Duration(seconds=2)
 
 
 def test_clock_types_and_ros_clock():
@@ -117,11 +118,9 @@ def test_tf_transformations_is_ros1_math():
     assert tft.quaternion_from_euler.__module__ == "rosgrade_transformations"
 
 
-def test_clock_type_text_is_the_pybind11_enums():
-    assert str(ClockType.ROS_TIME) == f"{ClockType.ROS_TIME}" == "ClockType.ROS_TIME"
+def test_clock_type_text_is_jazzys_int_enums():
+    assert str(ClockType.ROS_TIME) == f"{ClockType.ROS_TIME}" == "1" and f"{ClockType.ROS_TIME:d}" == "1"
     assert repr(ClockType.SYSTEM_TIME) == "<ClockType.SYSTEM_TIME: 2>" and ClockType.ROS_TIME == 1
-    with pytest.raises(TypeError, match="unsupported format string"):
-        f"{ClockType.ROS_TIME:d}"
 
 
 def test_log_of_a_non_str_is_pybind11s_type_error():

@@ -1,4 +1,4 @@
-"""rosgrade's rclpy: the ROS 2 (Jazzy/Kilted) client API for a student's node, run in lockstep with the grader."""
+"""rosgrade's rclpy: the ROS 2 (Jazzy) client API for a student's node, run in lockstep with the grader."""
 from __future__ import annotations
 
 from .context import Context
@@ -7,38 +7,24 @@ from .signals import SignalHandlerOptions, install_signal_handlers, uninstall_si
 from .task import Future
 from .utilities import get_default_context, get_rmw_implementation_identifier, ok  # noqa: F401
 from .utilities import shutdown as _shutdown
-from .utilities import try_shutdown as _try_shutdown
+from .utilities import try_shutdown  # Jazzy's: it leaves the signal handlers installed
 
 __all__ = ["Context", "Future", "Parameter", "SignalHandlerOptions", "create_node", "get_default_context",
            "get_global_executor", "init", "ok", "shutdown", "spin", "spin_once", "spin_until_future_complete",
            "try_shutdown"]
 
 
-class InitContextManager:
-    """What rclpy.init returns: a context manager that shuts the context down on exit."""
-
-    def __init__(self, args, context, domain_id, signal_handler_options) -> None:
-        self.context = get_default_context() if context is None else context
-        if signal_handler_options is None:
-            if context is None or context is get_default_context():
-                signal_handler_options = SignalHandlerOptions.ALL
-            else:
-                signal_handler_options = SignalHandlerOptions.NO
-        self.installed_signal_handlers = signal_handler_options != SignalHandlerOptions.NO
-        self.context.init(args, domain_id=domain_id)
-        install_signal_handlers(signal_handler_options)
-
-    def __enter__(self) -> InitContextManager:
-        return self
-
-    def __exit__(self, *exc) -> None:
-        shutdown_context = None if self.context is get_default_context() else self.context
-        try_shutdown(context=shutdown_context, uninstall_handlers=self.installed_signal_handlers)
-
-
-def init(*, args=None, context=None, domain_id=None, signal_handler_options=None) -> InitContextManager:
-    """Initialize ROS communications for a context (the default one unless given)."""
-    return InitContextManager(args, context, domain_id, signal_handler_options)
+def init(*, args=None, context=None, domain_id=None, signal_handler_options=None) -> None:
+    """Initialize ROS communications for a context (the default one unless given), then install the signal handlers
+    (by default only for the default context). Returns None, as Jazzy's rclpy (Kilted's returns a context manager)."""
+    context = get_default_context() if context is None else context
+    if signal_handler_options is None:
+        if context is get_default_context():
+            signal_handler_options = SignalHandlerOptions.ALL
+        else:
+            signal_handler_options = SignalHandlerOptions.NO
+    context.init(args, domain_id=domain_id)
+    install_signal_handlers(signal_handler_options)
 
 
 __executor = None
@@ -61,12 +47,6 @@ def get_global_executor():
 def shutdown(*, context=None, uninstall_handlers=None) -> None:
     """Shut a context down (destroying its nodes); the default context also uninstalls the signal handlers."""
     _shutdown(context=context)
-    if uninstall_handlers or (uninstall_handlers is None and (context is None or context is get_default_context())):
-        uninstall_signal_handlers()
-
-
-def try_shutdown(*, context=None, uninstall_handlers=None) -> None:
-    _try_shutdown(context=context)
     if uninstall_handlers or (uninstall_handlers is None and (context is None or context is get_default_context())):
         uninstall_signal_handlers()
 

@@ -10,6 +10,7 @@ registers with ``latch: true``: the grader hands its last message to each subscr
 from __future__ import annotations
 
 import itertools
+import sys
 
 import rosgrade_channel as ch
 from rosgrade_node import runtime
@@ -23,13 +24,19 @@ _init_sent = False
 endpoints: dict[int, tuple[str, str, str]] = {}
 # Open endpoints: handle -> the context (one DDS participant each) it was created in.
 _contexts: dict[int, object] = {}
-# rmw_fastrtps' refusal of a second type on a topic name within one participant, as real rclpy raises it.
+# rmw_fastrtps' refusal of a second type on a topic name within one participant, as Jazzy's rclpy raises it. For a
+# subscription, rcl then overwrites the error with "invalid allocator" while cleaning up (rcutils says so on stderr,
+# and the leftover error is printed once more), and that is the RCLError's text.
 _INCOMPATIBLE = {
     "pub": "Failed to create publisher: create_publisher() called for existing topic name {topic} with incompatible "
-           "type {type}, at /project/src/publisher.cpp:145, at /project/src/rcl/publisher.c:118",
-    "sub": "Failed to create subscription: create_subscription() called for existing topic name {topic} with "
-           "incompatible type {type}, at /project/src/subscription.cpp:526, at /project/src/rcl/subscription.c:116",
+           "type {type}, at /project/src/publisher.cpp:145, at /project/src/rcl/publisher.c:117",
+    "sub": "create_subscription() called for existing topic name {topic} with incompatible type {type}, at "
+           "/project/src/subscription.cpp:517, at /project/src/rcl/subscription.c:112",
 }
+_INVALID_ALLOCATOR = "invalid allocator, at /project/src/rcl/subscription.c:261"
+_ERROR_OVERWRITTEN = ("\n>>> [rcutils|error_handling.c:108] rcutils_set_error_state()\nThis error state is being "
+                      "overwritten:\n\n  '{old}'\n\nwith this new error message:\n\n  '{new}'\n\nrcutils_reset_error() "
+                      "should be called after error handling to avoid this.\n<<<\n{new}\n")
 
 
 def type_of(msg_type) -> tuple[str, str]:
@@ -63,7 +70,11 @@ def check_topic_type(kind: str, topic: str, msg_type, context, builtin: list[tup
     types = [t for h, (_, tp, t) in endpoints.items() if tp == topic and _contexts.get(h) is context]
     types += [t for tp, t in builtin if tp == topic]
     if any(t != name for t in types):
-        raise RCLError(_INCOMPATIBLE[kind].format(topic="rt" + topic, type=dds_type_name(name)))
+        error = _INCOMPATIBLE[kind].format(topic="rt" + topic, type=dds_type_name(name))
+        if kind == "sub":
+            sys.stderr.write(_ERROR_OVERWRITTEN.format(old=error, new=_INVALID_ALLOCATOR))
+            error = "Failed to create subscription: " + _INVALID_ALLOCATOR
+        raise RCLError(error)
 
 
 def register(kind: str, topic: str, msg_type, depth: int | None, latch: bool, context=None) -> int:

@@ -22,10 +22,12 @@ class SignalHandlerOptions(IntEnum):
     ALL = 3
 
 
-# rcl's error texts as real rclpy (the PyPI wheels, built under /project) prints them.
-PUBLISHER_CONTEXT_INVALID = "publisher's context is invalid, at /project/src/rcl/publisher.c:427"
+# rcl's error texts as Jazzy's rclpy (the PyPI ros-jazzy-* wheels, built under /project) prints them.
+PUBLISHER_CONTEXT_INVALID = "publisher's context is invalid, at /project/src/rcl/publisher.c:423"
 CONTEXT_INVALID = ("the given context is not valid, either rcl_init() was not called or rcl_shutdown() was called., "
-                   "at /project/src/rcl/guard_condition.c:65")
+                   "at /project/src/rcl/guard_condition.c:67")
 ROSOUT_FINI_FAILED = ("Failed to fini rosout publisher: rcl node implementation is invalid, "
-                      "at /project/src/rcl/node.c:387")
+                      "at /project/src/rcl/node.c:390")
 DESTROYED = "cannot use Destroyable because destruction was requested"
+ALREADY_SHUT_DOWN = ("failed to shutdown: rcl_shutdown already called on the given context, "
+                     "at /project/src/rcl/init.c:333")

@@ -73,7 +73,8 @@ class Client:
         return self._sequence
 
     def call(self, request, timeout_sec: float | None = None):
-        """Send ``request`` and wait for the response; another thread must spin the node meanwhile."""
+        """Send ``request`` and wait for the response; another thread must spin the node meanwhile. None when
+        ``timeout_sec`` passes first (Jazzy's rclpy; Kilted's raises TimeoutError)."""
         if not isinstance(request, self.srv_type.Request):
             raise TypeError()
         event = threading.Event()
@@ -82,7 +83,6 @@ class Client:
         if not future.done():
             if not event.wait(timeout_sec):
                 self.remove_pending_request(future)
-                raise TimeoutError()
         exception = future.exception()
         if exception is not None:
             raise exception

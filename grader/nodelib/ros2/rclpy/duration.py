@@ -1,7 +1,6 @@
-"""rclpy.duration.Duration: a signed span of integer nanoseconds, with real rclpy's arithmetic and errors."""
+"""rclpy.duration.Duration: a signed span of integer nanoseconds, with real rclpy's arithmetic and errors (Jazzy's:
+no Duration + Duration, Duration - Duration or Duration * number, which Kilted added)."""
 from __future__ import annotations
-
-import math
 
 from .constants import S_TO_NS
 
@@ -33,27 +32,6 @@ class Duration:
 
     def __hash__(self) -> int:
         return hash(self._nanoseconds)
-
-    def __add__(self, other):
-        if isinstance(other, Duration):
-            return Duration(nanoseconds=other.nanoseconds + self.nanoseconds)
-        return NotImplemented
-
-    def __sub__(self, other):
-        if isinstance(other, Duration):
-            return Duration(nanoseconds=self.nanoseconds - other.nanoseconds)
-        return NotImplemented
-
-    def __mul__(self, other):
-        if isinstance(other, int):
-            return Duration(nanoseconds=self.nanoseconds * other)
-        if isinstance(other, float):
-            if not math.isfinite(other):
-                if other == float("inf"):
-                    return Infinite
-                raise ValueError("Can't multiply duration with nan")
-            return Duration(nanoseconds=int(self.nanoseconds * other))
-        return NotImplemented
 
     def __eq__(self, other):
         if isinstance(other, Duration):

@@ -48,6 +48,14 @@ class Parameter:
         DOUBLE_ARRAY = 8
         STRING_ARRAY = 9
 
+        # Jazzy's Parameter.Type is an Enum: it prints as Type.DOUBLE (on-set refusals name it so), where Kilted's
+        # IntEnum prints 3.
+        def __str__(self) -> str:
+            return f"Type.{self.name}"
+
+        def __format__(self, spec: str) -> str:
+            return format(str(self), spec)
+
         @classmethod
         def from_parameter_value(cls, parameter_value) -> Parameter.Type:
             if parameter_value is None:

@@ -10,14 +10,16 @@ _ROS1_HINT = (" This might be a ROS 1 message type but it should be a ROS 2 mess
 
 def check_for_type_support(msg_or_srv_type) -> None:
     """Import the type support; AttributeError (with rclpy's ROS 1 hint) for anything without one."""
+    # Jazzy's rclpy reads the type support from the class's metaclass: for a class that is no ROS 2 type (int) the
+    # error names `type`.
     try:
-        support = msg_or_srv_type._TYPE_SUPPORT
+        support = msg_or_srv_type.__class__._TYPE_SUPPORT
     except AttributeError as exc:
         exc.args = (exc.args[0] + _ROS1_HINT, *exc.args[1:])
         raise
     if support is None:
-        msg_or_srv_type.__import_type_support__()
-    if msg_or_srv_type._TYPE_SUPPORT is None:
+        msg_or_srv_type.__class__.__import_type_support__()
+    if msg_or_srv_type.__class__._TYPE_SUPPORT is None:
         raise NoTypeSupportImportedException()
 
 

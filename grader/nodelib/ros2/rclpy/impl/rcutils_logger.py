@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import os
 import sys
-import warnings
 
 import rosgrade_channel as ch
 from rosgrade_node import runtime
@@ -245,9 +244,7 @@ class RcutilsLogger:
         return self.log(message, LoggingSeverity.WARN, **kwargs)
 
     def warn(self, message, **kwargs) -> bool:
-        """Deprecated alias of warning(), with real rclpy's DeprecationWarning."""
-        warnings.warn("Deprecated in favor of :py:classmethod:RcutilsLogger.warning:.", DeprecationWarning,
-                      stacklevel=2)
+        """Alias of warning(): deprecated in Jazzy's docstring only (Kilted's rclpy adds a DeprecationWarning)."""
         return self.warning(message, **kwargs)
 
     def error(self, message, **kwargs) -> bool:
