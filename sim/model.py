@@ -30,6 +30,8 @@ SETTLE_STEPS = PHYSICS_HZ // 2  # long enough for the contacts to reach static p
 CACHED_MODELS = 64  # distinct compiled models kept per process (a robot with a few obstacle layouts each)
 # Geom groups: obstacles 0 (what a laser sees), the robot 1, the floor 2.
 OBSTACLE_GROUP, ROBOT_GROUP, FLOOR_GROUP = 0, 1, 2
+# Contact bits: the body box (bit 2) meets obstacles only, never the floor or the wheels (bit 1), which meet both.
+BODY_BITS, OBSTACLE_BITS = 2, 3
 
 
 @dataclass(frozen=True)
@@ -43,6 +45,7 @@ class RobotModel:
     wheel_ctrl: tuple[int, int]
     base_body: int
     obstacle_geoms: tuple[int, ...]
+    floor_geom: int
 
 
 def _obstacle(index: int, obstacle: Box | Cylinder) -> str:
@@ -54,7 +57,7 @@ def _obstacle(index: int, obstacle: Box | Cylinder) -> str:
         shape = (f'type="box" size="{obstacle.length / 2!r} {obstacle.width / 2!r} {obstacle.height / 2!r}" '
                  f'quat="{math.cos(half)!r} 0 0 {math.sin(half)!r}"')
     return f"""
-    <geom name="obstacle_{index}" group="{OBSTACLE_GROUP}" {shape} pos="{obstacle.x!r} {obstacle.y!r} {obstacle.height / 2!r}"/>"""
+    <geom name="obstacle_{index}" group="{OBSTACLE_GROUP}" contype="{OBSTACLE_BITS}" conaffinity="{OBSTACLE_BITS}" {shape} pos="{obstacle.x!r} {obstacle.y!r} {obstacle.height / 2!r}"/>"""
 
 
 def mjcf(profile: RobotProfile, wheel_radius: float, obstacles: Sequence[Box | Cylinder] = ()) -> str:
@@ -84,6 +87,12 @@ def mjcf(profile: RobotProfile, wheel_radius: float, obstacles: Sequence[Box | C
     <velocity name="wheel_{side}" joint="wheel_{side}" kv="{a.kv!r}" forcerange="{-a.forcerange!r} {a.forcerange!r}"/>"""
         for side in ("left", "right")
     )
+    body = ""
+    if obstacles and g.body is not None:  # on an open floor nothing could touch it: the model stays as it was
+        b = g.body
+        body = f"""
+      <geom name="body" group="{ROBOT_GROUP}" type="box" size="{b.length / 2!r} {b.width / 2!r} {b.height / 2!r}"
+            pos="{b.x!r} 0 {b.z!r}" contype="{BODY_BITS}" conaffinity="{BODY_BITS}"/>"""
     com = " ".join(repr(v) for v in g.com)
     inertia = " ".join(repr(v) for v in g.base_inertia)
     return f"""<mujoco model="{profile.name}">
@@ -98,7 +107,7 @@ def mjcf(profile: RobotProfile, wheel_radius: float, obstacles: Sequence[Box | C
     <geom name="floor" group="{FLOOR_GROUP}" type="plane" size="0 0 1"/>{"".join(_obstacle(i, o) for i, o in enumerate(obstacles))}
     <body name="base">
       <freejoint name="base"/>
-      <inertial pos="{com}" mass="{g.base_mass!r}" diaginertia="{inertia}"/>{casters}{wheels}
+      <inertial pos="{com}" mass="{g.base_mass!r}" diaginertia="{inertia}"/>{body}{casters}{wheels}
     </body>
   </worldbody>
   <actuator>{actuators}
@@ -133,6 +142,7 @@ def _compile(xml: str, wheel_radius: float, obstacle_count: int) -> RobotModel:
         wheel_ctrl=(actuators[0], actuators[1]),
         base_body=mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, "base"),
         obstacle_geoms=obstacle_geoms,
+        floor_geom=mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "floor"),
     )
 
 

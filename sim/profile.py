@@ -34,6 +34,22 @@ class Caster(_Model):
     clearance: float = Field(0.0, ge=0)
 
 
+class Body(_Model):
+    """The base's collision box (URDF base_link collision), centred ``x`` ahead of and ``z`` above the base frame: what
+    touches a wall or pillar besides the wheels. Built only among obstacles, so an open floor's physics is unchanged."""
+
+    x: float
+    z: PositiveFloat
+    length: PositiveFloat
+    width: PositiveFloat
+    height: PositiveFloat
+
+    @property
+    def front(self) -> float:
+        """How far ahead of the base frame the body ends (the robot's front)."""
+        return self.x + self.length / 2
+
+
 class Geometry(_Model):
     """Nominal drive geometry and mass properties (base frame: origin on the floor midway between the wheels, x forward)."""
 
@@ -44,6 +60,7 @@ class Geometry(_Model):
     com: Vec3
     base_inertia: tuple[PositiveFloat, PositiveFloat, PositiveFloat]
     casters: list[Caster] = Field(min_length=1)
+    body: Body | None = None
 
 
 class Actuator(_Model):

@@ -102,6 +102,18 @@ class ScanSample:
 
 
 @dataclass(frozen=True, slots=True)
+class ContactSample:
+    """The robot touching one obstacle at ``t_ns``: which (its name, or kind and number), the deepest contact point in
+    the world frame and how far the two overlap there (m). Recorded for the grader only, never sent to a node."""
+
+    t_ns: int
+    topic: str
+    obstacle: str
+    position: Vec3
+    depth: float
+
+
+@dataclass(frozen=True, slots=True)
 class TurtlePoseSample:
     """Where a turtlesim turtle is at ``t_ns`` (turtlesim/Pose: canvas metres, y up, radians)."""
 
@@ -175,4 +187,4 @@ class ServiceResult:
 
 
 Sample = (OdometrySample | TransformSample | GroundTruthSample | CommandSample | ImuSample | JointStateSample
-          | ScanSample | TurtlePoseSample | ColorSample | LogSample)
+          | ScanSample | ContactSample | TurtlePoseSample | ColorSample | LogSample)

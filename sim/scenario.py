@@ -36,6 +36,7 @@ class Box(_Model):
     """A fixed box (a wall, a crate) standing on the floor: centre, heading, and full length x width x height in metres."""
 
     kind: Literal["box"]
+    name: str = Field("", description="what feedback calls it (empty: 'box' and its number)")
     x: float
     y: float
     yaw: float = 0.0
@@ -48,6 +49,7 @@ class Cylinder(_Model):
     """A fixed upright cylinder (a pillar) standing on the floor."""
 
     kind: Literal["cylinder"]
+    name: str = Field("", description="what feedback calls it (empty: 'cylinder' and its number)")
     x: float
     y: float
     radius: Positive

@@ -25,7 +25,7 @@ from sim.clock import last_step_at, step_ns, steps_per_tick
 from sim.model import build_model
 from sim.odometry import Estimate, WheelOdometry, WorldPoseOdometry, ground_truth, quaternion_yaw
 from sim.profile import RobotProfile, covariance_matrix, load_robot
-from sim.samples import (CommandSample, GroundTruthSample, OdometrySample, Sample, ServiceResult, TransformSample,
+from sim.samples import (CommandSample, ContactSample, GroundTruthSample, OdometrySample, Sample, ServiceResult, TransformSample,
                          WorldService, WorldTopic)
 from sim.scenario import Scenario, ScenarioTimes
 from sim.sensors import Imu, JointStates, Scanner
@@ -34,6 +34,8 @@ GROUND_TRUTH_HZ = 50  # above every odometry rate (30, 50 Hz); each sample is a 
 GROUND_TRUTH_TOPIC = "/ground_truth/odom"
 GROUND_TRUTH_FRAME = "world"
 TF_TOPIC = "/tf"
+# The robot touching an obstacle, checked on every ground-truth tick (so a touch shorter than 20 ms may pass unseen).
+CONTACT_TOPIC = "/rosgrade/contacts"
 # What a robot state keeps of MuJoCo: time, qpos, qvel, act, warm start, controls and applied forces (mj_step reads
 # nothing else; the derived quantities it leaves behind are recomputed by the next step before anything reads them).
 _INTEGRATION = mujoco.mjtState.mjSTATE_INTEGRATION
@@ -124,6 +126,9 @@ class World(ScenarioTimes):
         robot = build_model(self.profile, scenario.imperfections.wheel_radius_scale, scenario.obstacles)
         self.model = robot.model
         self.data = mujoco.MjData(self.model)
+        # Obstacle geom -> what feedback calls it; empty on an open floor, where contacts are never looked at.
+        self._obstacle_names = {geom: obstacle.name or f"{obstacle.kind} {i + 1}"
+                                for i, (geom, obstacle) in enumerate(zip(robot.obstacle_geoms, scenario.obstacles))}
         # Views of MjData's buffers, which never move: the ticks read them without going through the binding.
         self._qpos, self._qvel, self._ctrl = self.data.qpos, self.data.qvel, self.data.ctrl
         self._state_size = mujoco.mj_stateSize(self.model, _INTEGRATION)
@@ -214,6 +219,8 @@ class World(ScenarioTimes):
                                         sensors.joint_states.rate_hz))
         if sensors.scan is not None:
             declared.append(WorldTopic(sensors.scan.topic, "sensor_msgs/LaserScan", sensors.scan.rate_hz))
+        if self._obstacle_names:
+            declared.append(WorldTopic(CONTACT_TOPIC, "std_msgs/String", GROUND_TRUTH_HZ, to_nodes=False))
         return tuple(declared)
 
     @property
@@ -456,11 +463,26 @@ class World(ScenarioTimes):
             if truth:
                 g = ground_truth(qpos, qvel)
                 out.append(GroundTruthSample(t_ns, *self._truth_names, g.position, g.orientation, g.linear, g.angular))
+                if self._obstacle_names and self.data.ncon:
+                    out.extend(self._contacts(t_ns))
         for sensor in sensors:
             if out is not None:
                 out.append(sensor.sample(t_ns, qpos, qvel))
             else:
                 sensor.observe(t_ns, qvel)  # the IMU differentiates velocity: it keeps its state unheard
+
+    def _contacts(self, t_ns: int) -> list[ContactSample]:
+        """The obstacles the robot touches now (from the contacts of the last physics step), each once, at its deepest
+        point, in the order of the scenario's obstacles."""
+        n = self.data.ncon
+        geoms, dist, pos = self.data.contact.geom[:n], self.data.contact.dist[:n], self.data.contact.pos[:n]
+        deepest: dict[int, int] = {}
+        for i, (a, b) in enumerate(geoms.tolist()):
+            obstacle = a if a in self._obstacle_names else b if b in self._obstacle_names else None
+            if obstacle is not None and (obstacle not in deepest or dist[i] < dist[deepest[obstacle]]):
+                deepest[obstacle] = i
+        return [ContactSample(t_ns, CONTACT_TOPIC, self._obstacle_names[g], tuple(pos[i].tolist()), -float(dist[i]))
+                for g, i in sorted(deepest.items())]
 
 
 def _start_key(profile: RobotProfile, mode_name: str, scenario: Scenario, settled_ns: int) -> str:

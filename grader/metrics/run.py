@@ -16,6 +16,7 @@ TURTLE_POSE_TOPIC = "/turtle1/pose"  # turtlesim's pose of turtle1 (turtlesim/Po
 TURTLE_POSE_TYPE = "turtlesim/Pose"
 SERVICE_PREFIX = "/rosgrade/service"  # <service>/request, then <service>/response or <service>/error (the session's)
 PARAM_TOPIC = "/rosgrade/param"  # the run's parameter server: the tree it started with, then each change (JSON)
+CONTACT_TOPIC = "/rosgrade/contacts"  # the world's: the robot touching an obstacle, once per 50 Hz tick (JSON)
 RUN_KEYS = ("shutdown_requested_s", "exit_code", "exit_signal", "status", "ended_s")
 
 
@@ -109,6 +110,16 @@ class ParamChange:
     calls_before: int
 
 
+@dataclass(frozen=True)
+class Contact:
+    """The robot touching an obstacle at sim time ``t`` (s): which one, as feedback names it, and where (m)."""
+
+    t: float
+    obstacle: str
+    x: float
+    y: float
+
+
 # rospy's console prefix: "[INFO] [1795250908.523113, 21.060000]: " (wall and sim time) before the message.
 LOG_PREFIX = re.compile(
     r"^\s*\[\s*(?P<level>DEBUG|INFO|WARN|WARNING|ERROR|FATAL)\s*\]\s*(?:\[[^\]]*\]\s*:?)?\s?", re.I)
@@ -175,6 +186,7 @@ class RunData:
     service_calls: tuple[ServiceCall, ...] = ()  # in the order they were served
     param_changes: tuple[ParamChange, ...] = ()  # in the order they were made (none: a recording without them)
     action_goals: tuple[ActionGoal, ...] = ()  # the grader's, in the order sent (grader/metrics/action_record.py)
+    contacts: tuple[Contact, ...] = ()  # in time order; none on an open floor
     client_library: str = "rospy"  # the node's, as the recording says: "rospy" or "rclpy"
     # Velocity command types nodes published on the robot's command topics that its base does not take
     # (a Twist to the Jazzy TurtleBot3, which drives on TwistStamped), comma-separated.
@@ -212,6 +224,7 @@ class RunData:
             # The first change is the tree the run started with, whenever it was recorded.
             param_changes=tuple(c for c in self.param_changes if c.t < end or c is self.param_changes[0]),
             action_goals=tuple(goal for goal in self.action_goals if goal.t < end),
+            contacts=tuple(contact for contact in self.contacts if contact.t < end),
         )
 
     def shutdown_time(self) -> float | None:
@@ -237,6 +250,7 @@ class RunData:
             service_calls=calls,
             param_changes=params,
             action_goals=action_goals(recording),
+            contacts=contacts(recording),
             client_library=_client_library(recording),
             ignored_command_types=_ignored_command_types(recording),
             command_type=_command_type(recording),
@@ -306,6 +320,18 @@ def turtle_poses(recording: Any) -> dict[str, Trajectory]:
         if rows:
             poses[topic] = Trajectory.of(*zip(*rows), source="odometry")
     return poses
+
+
+def contacts(recording: Any) -> tuple[Contact, ...]:
+    """The world's record of the robot touching obstacles."""
+    if CONTACT_TOPIC not in {i.topic for i in getattr(recording, "topics", list)()}:
+        return ()
+    found = []
+    for t_ns, message in recording.world_messages(CONTACT_TOPIC):
+        record = _decode(getattr(message, "data", None))
+        if isinstance(record, dict):
+            found.append(Contact(t_ns / 1e9, str(record.get("obstacle", "")), float(record["x"]), float(record["y"])))
+    return tuple(found)
 
 
 def service_calls(recording: Any) -> tuple[ServiceCall, ...]:

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import json
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -10,8 +10,11 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
+from grader.metrics.collisions import Params as TouchParams
+from grader.metrics.collisions import touches
 from grader.metrics.pose_print import pose_lines
-from grader.metrics.run import OutputLine, RunData, Trajectory, param_changes, service_calls, turtle_poses
+from grader.metrics.run import (Contact, OutputLine, RunData, Trajectory, contacts, param_changes, service_calls,
+                                turtle_poses)
 from grader.report import SubmissionReport
 from grader.reports.canvas import canvas_figure
 from grader.reports.figures import Figures, level_changes, png, thin
@@ -128,7 +131,8 @@ def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = DPI,
         plots.append(Plot(task_id, scenario, "canvas", f"{task_id} ({scenario}): the turtlesim window at the end",
                           png(figure, dpi)))
     if path is not None and len(path.t):
-        figure = _path_figure(path, kind, has_truth=path is truth, stop_s=stop_s, figures=figures)
+        touched = touches(run.contacts if run is not None else contacts(recording), TouchParams().gap_s)
+        figure = _path_figure(path, kind, has_truth=path is truth, stop_s=stop_s, figures=figures, touched=touched)
         plots.append(Plot(task_id, scenario, "path", f"{task_id} ({scenario}): driven path", png(figure, dpi)))
     commands = recording.commands()
     if commands is not None and len(commands.t):
@@ -206,8 +210,9 @@ def _build_path(figure: Figure) -> None:
 
 
 def _path_figure(path: Any, kind: str | None, has_truth: bool, stop_s: float | None = None,
-                 figures: Figures | None = None) -> Figure:
-    """The whole recorded path; what the robot did after Ctrl+C in another colour, from a marked Ctrl+C point."""
+                 figures: Figures | None = None, touched: Sequence[Contact] = ()) -> Figure:
+    """The whole recorded path; what the robot did after Ctrl+C in another colour, from a marked Ctrl+C point; where
+    the robot touched a wall or pillar."""
     figures = figures or Figures(DPI)
     figure = figures.get("path", _build_path, PATH_SIZE_IN)
     axes = figure.axes[0]
@@ -223,6 +228,9 @@ def _path_figure(path: Any, kind: str | None, has_truth: bool, stop_s: float | N
     outline = _ideal_outline(kind, path)
     if outline is not None:  # drawn over the path so it stays visible where the two coincide
         axes.plot(outline[0], outline[1], "--", color="tab:green", lw=1.5, label=outline[2])
+    if touched:
+        axes.plot([c.x for c in touched], [c.y for c in touched], "*", color="tab:red", ms=12,
+                  label="touched a wall or pillar")
     axes.plot(path.x[-1], path.y[-1], "s", color="tab:red", ms=7, label="end")
     axes.plot(path.x[0], path.y[0], "o", mfc="none", mec="tab:green", mew=2, ms=12, label="start")
     figures.legends.add(axes, fontsize=8)

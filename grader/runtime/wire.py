@@ -7,6 +7,7 @@ the text channels' type, which velocity command types a robot base takes and how
 from __future__ import annotations
 
 import dataclasses
+import json
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
@@ -16,7 +17,7 @@ from grader.recording import serialize as ros1
 from grader.recording import serialize_cdr as cdr
 from grader.recording.messages import MessageCatalog, default_catalog
 from grader.recording.ros2_messages import Ros2Catalog, ros2_catalog
-from sim.samples import (ColorSample, GroundTruthSample, ImuSample, JointStateSample, LogSample, OdometrySample,
+from sim.samples import (ColorSample, ContactSample, GroundTruthSample, ImuSample, JointStateSample, LogSample, OdometrySample,
                          ScanSample, TransformSample, TurtlePoseSample, Vec3)
 
 TWIST = "geometry_msgs/Twist"
@@ -104,7 +105,8 @@ def _ros1_wire() -> Wire:
                   GroundTruthSample: ros1.ground_truth_bytes, ImuSample: ros1.imu_bytes,
                   JointStateSample: ros1.joint_state_bytes, ScanSample: ros1.laser_scan_bytes,
                   TurtlePoseSample: ros1.turtle_pose_bytes, ColorSample: ros1.color_bytes,
-                  LogSample: ros1.world_log_bytes},
+                  LogSample: ros1.world_log_bytes,
+                  ContactSample: lambda sample, seq: ros1.string_bytes(contact_text(sample))},
         log_type="rosgraph_msgs/Log", string_type="std_msgs/String", twist_type=TWIST,
         default_command_types=(TWIST,), command_decoders={TWIST: ros1.decode_twist},
         _log=ros1.log_bytes, _string=ros1.string_bytes, _twist=ros1.twist_bytes)
@@ -116,12 +118,19 @@ def _ros2_wire() -> Wire:
         encoders={OdometrySample: cdr.odometry_cdr, TransformSample: cdr.tf_cdr,
                   GroundTruthSample: cdr.ground_truth_cdr, ImuSample: cdr.imu_cdr,
                   JointStateSample: cdr.joint_state_cdr, ScanSample: cdr.laser_scan_cdr,
-                  TurtlePoseSample: cdr.turtle_pose_cdr, ColorSample: cdr.color_cdr, LogSample: cdr.world_log_cdr},
+                  TurtlePoseSample: cdr.turtle_pose_cdr, ColorSample: cdr.color_cdr, LogSample: cdr.world_log_cdr,
+                  ContactSample: lambda sample, seq: cdr.string_cdr(contact_text(sample))},
         log_type="rcl_interfaces/msg/Log", string_type="std_msgs/msg/String", twist_type=TWIST2,
         # The Jazzy TurtleBot3 (and the COM2009 simulation) drive on TwistStamped only; Humble's on Twist.
         default_command_types=(TWIST_STAMPED2,),
         command_decoders={TWIST2: cdr.decode_twist_cdr, TWIST_STAMPED2: cdr.decode_twist_stamped_cdr},
         _log=_log_cdr, _string=cdr.string_cdr, _twist=cdr.twist_cdr)
+
+
+def contact_text(sample: ContactSample) -> str:
+    """A contact as the JSON text its std_msgs/String carries (no ROS message says what touched what where)."""
+    x, y, z = sample.position
+    return json.dumps({"obstacle": sample.obstacle, "x": x, "y": y, "z": z, "depth": sample.depth})
 
 
 def _log_cdr(t_ns: int, seq: int, level: int, name: str, msg: str, file: str, function: str, line: int,

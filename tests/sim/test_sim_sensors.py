@@ -128,8 +128,8 @@ def test_obstacles_stop_the_robot():
                      script=[ScriptedCommand(t=0.0, linear=0.2)])
     world = World(crash)
     world.advance_to(world.start_ns + 6 * SECOND)
-    # the model collides through its wheels (r 0.033 m on the axle): it stops with them against the wall's face
-    assert world.state()["x"] == pytest.approx(0.5 - 0.033, abs=0.005)
+    # the base's collision box reaches 0.069 m ahead of the axle, beyond the wheels: it stops against the wall's face
+    assert world.state()["x"] == pytest.approx(0.5 - 0.069, abs=0.005)
 
 
 def test_obstacle_needs_its_kind():
