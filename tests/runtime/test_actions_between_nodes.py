@@ -47,12 +47,13 @@ def test_the_client_gets_every_feedback_and_the_result_of_a_goal_the_server_exec
     assert result.nodes[0].status == "exited", result.nodes[0].message
     # a single-threaded server blocks in its execute callback, so its clock stays at the goal's time (as rclpy's
     # /clock subscription waits for the executor); its feedback goes out every 0.5 s of sim time
-    assert printed == [(2.35, "ready before: False"), (2.6, "server at 0"), (2.6, "executing order 5 at 2600000000"),
-                       (2.6, "feedback [0, 1, 1] at 2600000000"), (2.61, "accepted True at 2600000000"),
-                       (3.1, "feedback [0, 1, 1, 2] at 3100000000"), (3.6, "feedback [0, 1, 1, 2, 3] at 3600000000"),
-                       (4.1, "feedback [0, 1, 1, 2, 3, 5] at 4100000000"), (4.6, "succeeded at 2600000000"),
-                       (4.6, f"result status {SUCCEEDED} [0, 1, 1, 2, 3, 5] handle status {SUCCEEDED} "
-                             "at 4600000000")]
+    # wait_for_server looks every 0.25 s until the services are served and the feedback and status topics matched
+    assert printed == [(2.35, "ready before: False"), (2.61, "server at 0"), (2.61, "executing order 5 at 2610000000"),
+                       (2.61, "feedback [0, 1, 1] at 2610000000"), (2.61, "accepted True at 2610000000"),
+                       (3.11, "feedback [0, 1, 1, 2] at 3110000000"), (3.61, "feedback [0, 1, 1, 2, 3] at 3610000000"),
+                       (4.11, "feedback [0, 1, 1, 2, 3, 5] at 4110000000"), (4.61, "succeeded at 2610000000"),
+                       (4.61, f"result status {SUCCEEDED} [0, 1, 1, 2, 3, 5] handle status {SUCCEEDED} "
+                              "at 4610000000")]
 
 
 def test_goal_and_result_are_recorded_as_service_calls_and_feedback_and_status_as_topics(fibonacci) -> None:
@@ -72,7 +73,7 @@ def test_goal_and_result_are_recorded_as_service_calls_and_feedback_and_status_a
 def test_a_goal_cancelled_while_it_executes_ends_canceled(tmp) -> None:
     _, recording, printed = _run(tmp, "cancel", ("cancel",))
     # a MultiThreadedExecutor with a reentrant group takes the cancel while the goal executes in a worker
-    assert (3.1, "cancel return_code 0 canceling 1 at 3100000000") in printed
+    assert (3.11, "cancel return_code 0 canceling 1 at 3110000000") in printed
     assert printed[-1][1].startswith(f"result status {CANCELED} [0, 1, 1, 2] handle status {CANCELED}")
     assert _statuses(recording) == [[EXECUTING], [CANCELING], [CANCELED]]
     cancel = [c for c in service_calls(recording) if c.service == "/fibonacci/_action/cancel_goal"]

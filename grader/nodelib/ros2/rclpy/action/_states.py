@@ -24,9 +24,10 @@ _TRANSITIONS = {
 
 
 def transition(state: int, event: GoalEvent) -> int:
-    """The state after ``event``; RCLError, worded as rcl_action's, when the machine has no such transition."""
+    """The state after ``event``; RCLError, worded as the Jazzy wheels' rcl_action (measured, conformance p15), when
+    the machine has no such transition."""
     new_state = _TRANSITIONS.get((state, event))
     if new_state is None:
         raise RCLError(f"Failed to update goal state: goal_handle attempted invalid transition from state "
-                       f"{_NAMES[state]} with event {event.name}")
+                       f"{_NAMES[state]} with event {event.name}, at /project/src/rcl_action/goal_handle.c:100")
     return new_state

@@ -287,10 +287,12 @@ class ActionClient(Waitable):
         return future
 
     def server_is_ready(self) -> bool:
-        """Whether the action's three services are served (rcl_action_server_is_available)."""
+        """rcl_action_server_is_available: the action's three services are served and its feedback and status
+        subscriptions have matched a publisher, so that no feedback of a goal sent now is lost."""
         self._node.handle
         return all(client.service_is_ready() for client in (self._goal_client, self._cancel_client,
-                                                             self._result_client))
+                                                             self._result_client)) \
+            and self._feedback_sub.get_publisher_count() > 0 and self._status_sub.get_publisher_count() > 0
 
     def wait_for_server(self, timeout_sec: float | None = None) -> bool:
         """Wait until a server is ready, looking every 0.25 s as rclpy does."""
