@@ -177,13 +177,15 @@ CASES = [
         f"Node('x') before init !! {NOT_INIT}",
         "rclpy.init() twice !! builtins.RuntimeError: Context.init() must only be called once",
         "node.get_fully_qualified_name() -> '/p08_not_initialized'",
+        "node.__enter__() (a Node as a context manager: Kilted only) !! builtins.AttributeError: 'Node' object has no "
+        "attribute '__enter__'",
         f"create_timer after shutdown !! {RCL_ERROR}: failed to create timer: the given context is not valid, either "
         "rcl_init() was not called or rcl_shutdown() was called., at /project/src/rcl/guard_condition.c:67",
         f"Node('y') after shutdown !! {NOT_INIT}",
         "rclpy.init() after shutdown -> None",
     ), stderr=(
         "Traceback (most recent call last):",
-        '  File "<probe>/p08_not_initialized.py", line 36, in <module>',
+        '  File "<probe>/p08_not_initialized.py", line 37, in <module>',
         '    Node("after_shutdown")',
         "  <library frames>",
         NOT_INIT,

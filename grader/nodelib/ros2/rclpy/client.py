@@ -142,8 +142,3 @@ class Client:
         self._destroyed = True
         self._responses.clear()
 
-    def __enter__(self) -> Client:
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.destroy()

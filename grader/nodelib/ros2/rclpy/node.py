@@ -410,12 +410,6 @@ class Node:
         self._destroyed = True
         self._wake_executor()
 
-    def __enter__(self) -> Node:
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.destroy_node()
-
     # -- graph ------------------------------------------------------------------------------------------------------
     def get_topic_names_and_types(self, no_demangle: bool = False) -> list[tuple[str, list[str]]]:
         """This process's endpoints, the world's topics and the ones every ROS 2 graph has."""

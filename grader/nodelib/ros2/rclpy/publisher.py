@@ -69,8 +69,3 @@ class Publisher:
             _graph.unregister(self._handle)
             self._handle = None
 
-    def __enter__(self) -> Publisher:
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.destroy()

@@ -70,8 +70,3 @@ class Service:
             _runtime.scheduler().remove_sink(self._handle)
             _runtime.link().send_json(ch.UNREGISTER, {"id": self._handle})
 
-    def __enter__(self) -> Service:
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.destroy()

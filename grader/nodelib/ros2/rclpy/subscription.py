@@ -92,8 +92,3 @@ class Subscription:
             self._handle = None
             self._queue.clear()
 
-    def __enter__(self) -> Subscription:
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.destroy()

@@ -138,12 +138,6 @@ class Timer:
     def destroy(self) -> None:
         self._destroyed = True
 
-    def __enter__(self) -> Timer:
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.destroy()
-
 
 class Rate:
     """Sleeps until its timer fires; the timer only fires while an executor spins the node (in another thread)."""
