@@ -120,6 +120,8 @@ CASES = [
         "Duration(seconds=2) > 1 !! builtins.TypeError: '>' not supported between instances of 'Duration' and 'int'",
         "Duration(seconds=2) + Duration(seconds=1) !! builtins.TypeError: unsupported operand type(s) for +: "
         "'Duration' and 'Duration'",
+        "rclpy.timer.TimerInfo (Kilted only) !! builtins.AttributeError: module 'rclpy.timer' has no attribute "
+        "'TimerInfo'",
         "rclpy.ok() without init -> False (bool)",
     ), stderr_empty=True),
     Case("p06_logging", "p06_logging.py", stdout=(

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Probe 5: rclpy.time.Time / Duration values, arithmetic, comparisons and the errors they raise (no ROS graph)."""
 import rclpy
+import rclpy.timer
 from builtin_interfaces.msg import Time as TimeMsg
 from rclpy.clock import ClockType
 from rclpy.duration import Duration
@@ -50,4 +51,5 @@ show("Duration(seconds=2) + Duration(seconds=1)", lambda: Duration(seconds=2) + 
 show("Duration(seconds=2) - Duration(seconds=1)", lambda: Duration(seconds=2) - Duration(seconds=1))
 show("(Time(seconds=3) - Time(seconds=1)).nanoseconds / 1e9",
      lambda: (Time(seconds=3) - Time(seconds=1)).nanoseconds / 1e9)
+show("rclpy.timer.TimerInfo (Kilted only)", lambda: rclpy.timer.TimerInfo)
 show("rclpy.ok() without init", rclpy.ok)

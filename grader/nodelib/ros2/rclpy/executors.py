@@ -256,8 +256,8 @@ class Executor:
         if kind == "clock":
             return entity.apply_clock
         if kind == "timer":
-            info = entity.call()
-            return lambda: entity.run_callback(info)
+            entity.call()
+            return entity.run_callback
         if kind == "sub":
             taken = entity.take()
             if taken is None:

@@ -1,7 +1,6 @@
 """rclpy.timer: Timer with rcl's schedule (next call advances by whole periods, skipping missed ones) and Rate."""
 from __future__ import annotations
 
-import inspect
 import threading
 
 from . import _runtime
@@ -9,26 +8,6 @@ from ._rclpy_pybind11 import CONTEXT_INVALID, DESTROYED, InvalidHandle, RCLError
 from .clock import Clock
 from .clock_type import ClockType
 from .exceptions import ROSInterruptException
-from .time import Time
-
-
-class TimerInfo:
-    """What a callback annotated with a TimerInfo parameter receives."""
-
-    def __init__(self, *, expected_call_time: int = 0, actual_call_time: int = 0,
-                 clock_type: ClockType = ClockType.SYSTEM_TIME) -> None:
-        if expected_call_time < 0 or actual_call_time < 0:
-            raise ValueError("call time values must not be negative")
-        self._expected_call_time = Time(nanoseconds=expected_call_time, clock_type=clock_type)
-        self._actual_call_time = Time(nanoseconds=actual_call_time, clock_type=clock_type)
-
-    @property
-    def expected_call_time(self) -> Time:
-        return self._expected_call_time
-
-    @property
-    def actual_call_time(self) -> Time:
-        return self._actual_call_time
 
 
 class Timer:
@@ -108,10 +87,9 @@ class Timer:
             return _runtime.clock_wake_ns(self._next_call_ns)
         return self._next_call_ns - (_runtime.system_ns() - _runtime.world_ns())
 
-    def call(self) -> TimerInfo:
+    def call(self) -> None:
         """rcl_timer_call: advance the schedule by one period, or by as many as were missed."""
         now = self._clock._now_ns()
-        expected = self._next_call_ns
         self._last_call_ns = now
         self._next_call_ns += self._period_ns
         if self._next_call_ns < now:
@@ -120,20 +98,11 @@ class Timer:
             else:
                 ahead = now - self._next_call_ns
                 self._next_call_ns += (1 + (ahead - 1) // self._period_ns) * self._period_ns
-        return TimerInfo(expected_call_time=expected, actual_call_time=now, clock_type=self._clock.clock_type)
 
-    def run_callback(self, info: TimerInfo) -> None:
-        if self.callback is None:
-            return
-        try:
-            params = inspect.signature(self.callback).parameters.values()
-        except (TypeError, ValueError):
-            params = ()
-        for param in params:
-            if param.annotation is TimerInfo or param.annotation == "TimerInfo":
-                self.callback(**{param.name: info})
-                return
-        self.callback()
+    def run_callback(self) -> None:
+        """The callback, with no argument (Jazzy's rclpy has no TimerInfo; Kilted passes one to an annotated one)."""
+        if self.callback is not None:
+            self.callback()
 
     def destroy(self) -> None:
         self._destroyed = True
