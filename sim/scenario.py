@@ -6,8 +6,8 @@ from __future__ import annotations
 
 from typing import Annotated, Literal, Union
 
-from pydantic import (BaseModel, ConfigDict, Field, JsonValue, StrictBool, StrictFloat, StrictInt, StrictStr,
-                      field_validator, model_validator)
+from pydantic import (BaseModel, ConfigDict, Field, JsonValue, SerializerFunctionWrapHandler, StrictBool,
+                      StrictFloat, StrictInt, StrictStr, field_validator, model_serializer, model_validator)
 
 from sim.clock import seconds_to_ns
 from sim.profile import ProfileError, load_robot
@@ -169,6 +169,8 @@ class Scenario(_Model):
     """One run: the world starts at ``start_time`` (it has been running since 0) and lasts ``duration`` seconds after it."""
 
     robot: str = "turtlebot3_waffle"
+    world: str | None = Field(None, description="a course world in sim/course_worlds/ (None: an open floor)")
+    start: str | None = Field(None, description="a start pose of the course world, by name; sets initial_pose")
     base_mode: str | None = Field(None, description="a mode of the robot profile; None: the profile's default_mode")
     initial_pose: Pose2D = Pose2D()
     start_time: NonNegative = Field(2.0, description="sim seconds at which the node starts")
@@ -191,11 +193,57 @@ class Scenario(_Model):
         "'geometry_msgs/TwistStamped']; None: what the run's client library's robot takes (ROS 1: Twist; "
         "ROS 2 Jazzy: TwistStamped)")
 
+    @model_validator(mode="before")
+    @classmethod
+    def _start_pose(cls, data: object) -> object:
+        """A named start sets ``initial_pose`` (given both, they must agree: a recorded scenario holds both)."""
+        if isinstance(data, dict) and data.get("start") is not None and data.get("world") is not None:
+            from sim.course import CourseWorldError, load_course_world  # sim.course builds on this module's shapes
+            try:
+                starts = load_course_world(data["world"]).starts
+            except CourseWorldError as exc:
+                raise ValueError(f"world: {exc}") from None
+            if data["start"] not in starts:
+                raise ValueError(f"start {data['start']!r} is not a start of {data['world']}; expected one of "
+                                 f"{sorted(starts)}")
+            pose = starts[data["start"]]
+            given = data.get("initial_pose")
+            if given is not None and Pose2D.model_validate(given) != pose:
+                raise ValueError(f"initial_pose differs from start {data['start']!r} of {data['world']}; give one")
+            data = {**data, "initial_pose": pose}
+        return data
+
+    @model_serializer(mode="wrap")
+    def _dump(self, handler: SerializerFunctionWrapHandler) -> dict:
+        """Without an unset world or start, so a scenario without a course world is recorded as it always was."""
+        dumped = handler(self)
+        for key in ("world", "start"):
+            if dumped.get(key, "") is None:
+                del dumped[key]
+        return dumped
+
+    @property
+    def all_obstacles(self) -> tuple[Box | Cylinder, ...]:
+        """The course world's walls and pillars, then the scenario's own obstacles."""
+        if self.world is None:
+            return tuple(self.obstacles)
+        from sim.course import load_course_world
+        return (*load_course_world(self.world).obstacles, *self.obstacles)
+
     @model_validator(mode="after")
     def _check(self) -> Scenario:
+        if self.world is not None:
+            from sim.course import CourseWorldError, load_course_world
+            try:
+                load_course_world(self.world)
+            except CourseWorldError as exc:
+                raise ValueError(f"world: {exc}") from None
+        if self.start is not None and self.world is None:
+            raise ValueError("start names a start pose of a course world; name the world too")
         if self.robot == TURTLESIM:
-            if self.base_mode is not None or self.obstacles or self.imperfections != Imperfections():
-                raise ValueError("turtlesim has no base modes, obstacles or imperfections; remove them from the scenario")
+            if self.base_mode is not None or self.obstacles or self.world or self.imperfections != Imperfections():
+                raise ValueError("turtlesim has no base modes, worlds, obstacles or imperfections; remove them from "
+                                 "the scenario")
         else:
             try:
                 profile = load_robot(self.robot)

@@ -123,12 +123,13 @@ class World(ScenarioTimes):
                 raise SimError(f"script[{i}].topic {command.topic!r} is not a command topic of {self.profile.name}; expected one of {self._topics}")
 
         geometry = self.profile.geometry
-        robot = build_model(self.profile, scenario.imperfections.wheel_radius_scale, scenario.obstacles)
+        obstacles = scenario.all_obstacles
+        robot = build_model(self.profile, scenario.imperfections.wheel_radius_scale, obstacles)
         self.model = robot.model
         self.data = mujoco.MjData(self.model)
         # Obstacle geom -> what feedback calls it; empty on an open floor, where contacts are never looked at.
         self._obstacle_names = {geom: obstacle.name or f"{obstacle.kind} {i + 1}"
-                                for i, (geom, obstacle) in enumerate(zip(robot.obstacle_geoms, scenario.obstacles))}
+                                for i, (geom, obstacle) in enumerate(zip(robot.obstacle_geoms, obstacles))}
         # Views of MjData's buffers, which never move: the ticks read them without going through the binding.
         self._qpos, self._qvel, self._ctrl = self.data.qpos, self.data.qvel, self.data.ctrl
         self._state_size = mujoco.mj_stateSize(self.model, _INTEGRATION)
@@ -489,7 +490,7 @@ def _start_key(profile: RobotProfile, mode_name: str, scenario: Scenario, settle
     """Everything that shapes a world until it has settled at ``settled_ns`` (the script acts only from the start
     on); repr keeps every float's exact value, -0.0 included."""
     return repr((profile.model_dump(), mode_name, scenario.imperfections.wheel_radius_scale,
-                 [obstacle.model_dump() for obstacle in scenario.obstacles], scenario.initial_pose.model_dump(),
+                 [obstacle.model_dump() for obstacle in scenario.all_obstacles], scenario.initial_pose.model_dump(),
                  settled_ns))
 
 

@@ -10,6 +10,7 @@ from typing import Any, Literal
 import numpy as np
 
 from grader.metrics.action_record import ActionGoal, action_goals
+from sim.scenario import Box, Cylinder, Scenario
 
 DRIVER_CALLERID = "/rosgrade_driver"  # the grader's scripted driver; its commands are not the student's
 TURTLE_POSE_TOPIC = "/turtle1/pose"  # turtlesim's pose of turtle1 (turtlesim/Pose), its only odometry
@@ -187,6 +188,7 @@ class RunData:
     param_changes: tuple[ParamChange, ...] = ()  # in the order they were made (none: a recording without them)
     action_goals: tuple[ActionGoal, ...] = ()  # the grader's, in the order sent (grader/metrics/action_record.py)
     contacts: tuple[Contact, ...] = ()  # in time order; none on an open floor
+    obstacles: tuple[Box | Cylinder, ...] = ()  # the course world's walls and pillars, then the scenario's own
     client_library: str = "rospy"  # the node's, as the recording says: "rospy" or "rclpy"
     # Velocity command types nodes published on the robot's command topics that its base does not take
     # (a Twist to the Jazzy TurtleBot3, which drives on TwistStamped), comma-separated.
@@ -251,6 +253,7 @@ class RunData:
             param_changes=params,
             action_goals=action_goals(recording),
             contacts=contacts(recording),
+            obstacles=obstacles(recording),
             client_library=_client_library(recording),
             ignored_command_types=_ignored_command_types(recording),
             command_type=_command_type(recording),
@@ -320,6 +323,17 @@ def turtle_poses(recording: Any) -> dict[str, Trajectory]:
         if rows:
             poses[topic] = Trajectory.of(*zip(*rows), source="odometry")
     return poses
+
+
+def obstacles(recording: Any) -> tuple[Box | Cylinder, ...]:
+    """The walls and pillars of the recorded scenario (none when it holds no scenario this version can read)."""
+    recorded = _decode(_world_info(recording).get("scenario"))
+    if not isinstance(recorded, dict):
+        return ()
+    try:
+        return Scenario.model_validate(recorded).all_obstacles
+    except ValueError:
+        return ()
 
 
 def contacts(recording: Any) -> tuple[Contact, ...]:

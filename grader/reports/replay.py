@@ -17,6 +17,7 @@ import numpy as np
 # The turtlesim picture's replay, step by step: the strokes are the picture's, only kept with their times.
 from grader.metrics.pen import _events, _move, _Params, _serve
 from grader.metrics.run import TURTLE_POSE_TOPIC, ParamChange, RunData, RunInfo, Trajectory
+from grader.metrics.run import obstacles as recorded_obstacles
 from grader.metrics.wall_hits import WARNING as WALL_WARNING
 from grader.report import TaskReport
 from grader.reports.cause import criterion_measured
@@ -319,8 +320,7 @@ def replay_of(task: TaskReport, scenario: str, recording: Any, run: RunData | No
                          "px_per_m": METER_PX}
         canvas = _pen_canvas(run)
     else:
-        world = _record(recording, "rosgrade").get("scenario")
-        obstacles = (world.get("obstacles") if isinstance(world, dict) else None) or []
+        obstacles = [o.model_dump() for o in recorded_obstacles(recording)]
         xs = [*np.asarray(path.x).tolist(), *(o["x"] for o in obstacles)] or [0.0]
         ys = [*np.asarray(path.y).tolist(), *(o["y"] for o in obstacles)] or [0.0]
         outline = _ideal_outline(shape_for(task.id), path) if len(path) else None
