@@ -189,6 +189,7 @@ class RunData:
     action_goals: tuple[ActionGoal, ...] = ()  # the grader's, in the order sent (grader/metrics/action_record.py)
     contacts: tuple[Contact, ...] = ()  # in time order; none on an open floor
     obstacles: tuple[Box | Cylinder, ...] = ()  # the course world's walls and pillars, then the scenario's own
+    robot: str = ""  # the robot profile the run simulated ("" when the recording does not say)
     client_library: str = "rospy"  # the node's, as the recording says: "rospy" or "rclpy"
     # Velocity command types nodes published on the robot's command topics that its base does not take
     # (a Twist to the Jazzy TurtleBot3, which drives on TwistStamped), comma-separated.
@@ -254,6 +255,7 @@ class RunData:
             action_goals=action_goals(recording),
             contacts=contacts(recording),
             obstacles=obstacles(recording),
+            robot=str(_world_info(recording).get("robot", "")),
             client_library=_client_library(recording),
             ignored_command_types=_ignored_command_types(recording),
             command_type=_command_type(recording),
@@ -330,8 +332,8 @@ def obstacles(recording: Any) -> tuple[Box | Cylinder, ...]:
     recorded = _decode(_world_info(recording).get("scenario"))
     if not isinstance(recorded, dict):
         return ()
-    try:
-        return Scenario.model_validate(recorded).all_obstacles
+    try:  # a rubric's scenario records its name, description and such besides the world's fields
+        return Scenario.model_validate({k: v for k, v in recorded.items() if k in Scenario.model_fields}).all_obstacles
     except ValueError:
         return ()
 

@@ -16,6 +16,7 @@ from grader.metrics import OutputLine, RunData, RunInfo
 from grader.metrics.action_record import ActionGoal
 from grader.metrics.run import ServiceCall
 from grader.metrics.motion import wrap
+from grader.metrics.stop_distance import ahead
 from grader.metrics.wall_hits import WARNING
 from grader.report import CriterionResult
 from grader.rubric import Scenario, load_rubrics
@@ -80,6 +81,9 @@ def _motion(task: str, s: Scenario, x: float, y: float, yaw: float) -> list[Segm
         return [(((3.02 if task == "move_distance" else 2.02) - x) / 0.2, 0.2, 0.0)]
     if task == "husky_distance":
         return [(10.2 / 0.8, 0.8, 0.0)]
+    if task == "obstacle_stop":  # straight ahead until the front is 0.5 m from the wall
+        free, _ = ahead(_in_world(RUBRICS[task].robot, s, run([])), x, y, yaw)
+        return [((free - 0.5) / 0.2, 0.2, 0.0)]
     if task == "figure_of_eight":  # two 1 m loops of 30 s each, anticlockwise then clockwise
         v, w = math.pi / 30.0, 2.0 * math.pi / 30.0
         return [(30.0, v, w), (30.0, v, -w)]
@@ -121,6 +125,11 @@ def _lines(task: str, odom, t_end: float) -> list[OutputLine]:
     return []
 
 
+def _in_world(robot: str, s: Scenario, data: RunData) -> RunData:
+    """``data`` as recorded in scenario ``s``'s world: its robot, walls and pillars."""
+    return replace(data, robot=robot, obstacles=s.all_obstacles)
+
+
 @cache
 def _scores(task: str, after: str | None, announced: bool = True) -> dict[str, CriterionResult]:
     """Every criterion of ``task`` scored on a correct node's runs up to ``T`` (the scenario's Ctrl+C, else its end).
@@ -135,8 +144,8 @@ def _scores(task: str, after: str | None, announced: bool = True) -> dict[str, C
         t0 = s.start_time
         lines = _lines(task, path(segs, x, y, yaw, t0), t0 + end)
         if after is None:
-            runs[s.name] = run(segs, x0=x, y0=y, yaw0=yaw, t0=t0, lines=lines,
-                               info=RunInfo(exit_code=0, status="exited", ended_s=t0 + end))
+            runs[s.name] = _in_world(rubric.robot, s, run(segs, x0=x, y0=y, yaw0=yaw, t0=t0, lines=lines,
+                                                          info=RunInfo(exit_code=0, status="exited", ended_s=t0 + end)))
             continue
         shutdown = t0 + end
         later = [OutputLine(shutdown + 0.5, "rosout", f"{WARNING} Clamping from [x=11.2, y=3.0]", "WARN")]
@@ -148,15 +157,15 @@ def _scores(task: str, after: str | None, announced: bool = True) -> dict[str, C
                        ended_s=shutdown + AFTER_S)
         data = run(segs + motion, x0=x, y0=y, yaw0=yaw, t0=t0, lines=lines + later, info=info,
                    shutdown_at=end if announced else None)
-        runs[s.name] = replace(data, commands=commands(segs + sent, t0))
+        runs[s.name] = _in_world(rubric.robot, s, replace(data, commands=commands(segs + sent, t0)))
     return {c.id: c for c in score_task(rubric, runs).criteria}
 
 
 # The tasks that drive a robot, each with a correct motion in ``_motion`` (a task added later needs one there).
 DRIVING_TASKS = (
     "figure_of_eight", "husky_distance", "move_circle", "move_distance", "move_distance_launch", "move_square",
-    "mover_odom_square", "mover_timed_square", "odom_subscriber", "square_odom_launch", "turtle_circle",
-    "turtle_clean", "turtle_goal", "turtle_launch", "turtle_move", "turtle_rotate", "turtle_triangle",
+    "mover_odom_square", "mover_timed_square", "obstacle_stop", "odom_subscriber", "square_odom_launch",
+    "turtle_circle", "turtle_clean", "turtle_goal", "turtle_launch", "turtle_move", "turtle_rotate", "turtle_triangle",
 )
 CRITERIA = [(task, c.id, after) for task in DRIVING_TASKS for c in RUBRICS[task].criteria
             if not c.metric_def.needs_shutdown for after in AFTER]

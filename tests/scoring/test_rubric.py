@@ -16,6 +16,7 @@ CONTRACT = {
     "mover_odom_square": ["side_length", "corner_angle", "closure", "velocity_limits", "shutdown_stop"],
     "move_distance": ["stop_position", "stays_stopped", "velocity_limits"],
     "husky_distance": ["stop_distance", "velocity_limits"],
+    "obstacle_stop": ["stop_distance", "no_collision", "velocity_limits"],
     "figure_of_eight": ["loop_shape", "loop_directions", "stop_position", "duration", "log_rate", "log_format",
                         "log_values", "velocity_limits", "shutdown_stop"],
     "move_distance_launch": ["stop_position", "stays_stopped", "velocity_limits"],

@@ -1,0 +1,94 @@
+"""Stop distance: how far the robot's front was from the obstacle ahead when it came to rest (walls and pillars)."""
+from __future__ import annotations
+
+import math
+
+from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
+from grader.metrics.motion import path_length, rest_since
+from grader.metrics.run import RunData
+from sim.profile import ProfileError, load_robot
+from sim.scenario import Box, Cylinder
+
+RAYS = 9  # parallel rays across the front edge: a pillar off the centre line still counts as ahead
+
+
+class Params(TrajectoryParams):
+    """Where the robot really was (ground truth) is what the distance is measured from."""
+
+    min_travel: float = 0.05  # m: a robot that never moved has not "stopped" anywhere
+
+
+def ray_distance(x: float, y: float, dx: float, dy: float, obstacle: Box | Cylinder) -> float:
+    """How far along the unit direction (dx, dy) from (x, y) the ray meets ``obstacle``'s outline (inf: never)."""
+    if isinstance(obstacle, Cylinder):
+        ox, oy = x - obstacle.x, y - obstacle.y
+        along = ox * dx + oy * dy
+        gap = ox * ox + oy * oy - obstacle.radius ** 2
+        if gap <= 0:
+            return 0.0
+        disc = along * along - gap
+        return -along - math.sqrt(disc) if disc >= 0 and along < 0 else math.inf
+    c, s = math.cos(obstacle.yaw), math.sin(obstacle.yaw)
+    # the ray in the box's own frame, where it is the slab |u| <= length/2, |v| <= width/2
+    u, v = c * (x - obstacle.x) + s * (y - obstacle.y), -s * (x - obstacle.x) + c * (y - obstacle.y)
+    du, dv = c * dx + s * dy, -s * dx + c * dy
+    near, far = 0.0, math.inf
+    for p, d, half in ((u, du, obstacle.length / 2), (v, dv, obstacle.width / 2)):
+        if d == 0:
+            if abs(p) > half:
+                return math.inf
+            continue
+        t1, t2 = sorted(((-half - p) / d, (half - p) / d))
+        near, far = max(near, t1), min(far, t2)
+    return near if near <= far else math.inf
+
+
+def ahead(run: RunData, x: float, y: float, yaw: float) -> tuple[float, str]:
+    """The free distance in front of a robot at (x, y, yaw), and what ends it: the shortest of parallel rays from
+    points across the front edge of its body, straight ahead."""
+    try:
+        body = load_robot(run.robot).geometry.body
+    except ProfileError:
+        body = None
+    if body is None:
+        raise MetricError(f"the robot {run.robot or '(not recorded)'} has no body outline to measure its front from")
+    dx, dy = math.cos(yaw), math.sin(yaw)
+    best, what = math.inf, ""
+    for i in range(RAYS):
+        side = body.width * (i / (RAYS - 1) - 0.5)
+        px, py = x + body.front * dx - side * dy, y + body.front * dy + side * dx
+        for n, obstacle in enumerate(run.obstacles, start=1):
+            d = ray_distance(px, py, dx, dy, obstacle)
+            if d < best:
+                best, what = d, obstacle.name or f"{obstacle.kind} {n}"
+    return best, what
+
+
+def measure(run: RunData, params: Params) -> Measurement:
+    """Where the robot came to rest at the end of the run, and the free distance ahead of its front there."""
+    traj = run.trajectory(params.source)
+    if len(traj) < 2:
+        raise MetricError("the recording has no poses to locate the robot")
+    if not run.obstacles:
+        raise MetricError("this run had no walls or pillars to stop in front of")
+    moved = path_length(traj) >= params.min_travel
+    rest_from = rest_since(traj, params.rest_speed, params.rest_turn_rate) if moved else None
+    at = -1 if rest_from is None else int(traj.t.searchsorted(rest_from))
+    distance, obstacle = ahead(run, float(traj.x[at]), float(traj.y[at]), float(traj.yaw[at]))
+    return {
+        "stop_distance": distance if rest_from is not None else math.nan,
+        "distance_at_end": distance,
+        "obstacle_ahead": obstacle,
+        "moved": moved,
+        "moving_at_end": moved and rest_from is None,
+        "stopped_at_s": math.nan if rest_from is None else rest_from - run.start_time,
+    }
+
+
+METRIC = Metric(
+    name="stop_distance",
+    params=Params,
+    quantities=frozenset({"stop_distance", "distance_at_end", "obstacle_ahead", "moved", "moving_at_end",
+                          "stopped_at_s"}),
+    measure=measure,
+)
