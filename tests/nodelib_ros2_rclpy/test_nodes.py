@@ -43,8 +43,11 @@ def no_run():
 def test_init_and_endpoints_are_announced_with_ros2_types(default_run):
     init = default_run.of("INIT")[0].data
     assert init == {"name": "/move_circle", "anonymous": False, "log_level": 20, "disable_signals": False}
-    adv = default_run.of("ADVERTISE")[0].data
-    assert adv["topic"] == "/cmd_vel" and adv["type"] == "geometry_msgs/msg/TwistStamped"
+    advertised = {f.data["topic"]: f.data for f in default_run.of("ADVERTISE")}
+    # Every rclpy node publishes its parameter changes, as real rclpy's do.
+    assert advertised["/parameter_events"]["type"] == "rcl_interfaces/msg/ParameterEvent"
+    adv = advertised["/cmd_vel"]
+    assert adv["type"] == "geometry_msgs/msg/TwistStamped"
     assert adv["md5sum"].startswith("RIHS01_") and adv["queue_size"] == 10 and adv["latch"] is False
     sub = default_run.of("SUBSCRIBE")[0].data
     assert (sub["topic"], sub["type"]) == ("/odom", "nav_msgs/msg/Odometry")
@@ -124,7 +127,10 @@ def api_run():
     "publish wrong type: builtins.TypeError: Expected <class 'geometry_msgs.msg._twist_stamped.TwistStamped'>, "
     "got <class 'geometry_msgs.msg._twist.Twist'>",
     "bad qos: builtins.TypeError: Expected QoSProfile or int, but received <class 'str'>",
-    "subscription count: 0",
+    # The stand-in grader connects an endpoint at its first BATCH, and the node's parameter services and events
+    # charge a clock period of call quanta before the count: one BATCH comes between (the session's discovery is
+    # conformance probe p20's).
+    "subscription count: 1",
     "fqn: ('api', '/', '/api')",
     "spin_once(0) waited 0.0",
     "duration: builtins.TypeError: unsupported operand type(s) for +: 'Duration' and 'Duration'",  # Jazzy's
@@ -138,8 +144,9 @@ def test_api_behaviour(api_run, line):
 
 
 def test_spin_once_counts_each_clock_update_as_work(api_run):
-    # four spin_once: /clock 1.76 (the first after rclpy.init's 0.35 s), the overdue 0.5 s timer, /clock 1.77, 1.78
-    assert "ticks [1760000000]" in api_run.lines()
+    # four spin_once: /clock 1.77 (the first after rclpy.init's 0.35 s and the 10 ms of calls the node's parameter
+    # services and declarations charge), the overdue 0.5 s timer, /clock 1.78, 1.79
+    assert "ticks [1770000000]" in api_run.lines()
 
 
 def test_logging_filters_levels_and_deprecated_warn(api_run):
@@ -154,7 +161,9 @@ def test_logging_filters_levels_and_deprecated_warn(api_run):
 def test_transient_local_publisher_registers_latched(api_run):
     adv = [f.data for f in api_run.of("ADVERTISE") if f.data["topic"] == "/status"]
     assert adv[0]["latch"] is True and adv[0]["queue_size"] == 1
-    assert [f.data["id"] for f in api_run.of("UNREGISTER")] == [f.data["id"] for f in api_run.of("ADVERTISE")]
+    # destroy_node unregisters every publisher and the parameter services.
+    registered = [f.data["id"] for f in api_run.of("ADVERTISE")] + [f.data["id"] for f in api_run.of("SERVE")]
+    assert sorted(f.data["id"] for f in api_run.of("UNREGISTER")) == sorted(registered)
 
 
 def test_blocking_callback_starves_subscriptions_and_the_clock():
