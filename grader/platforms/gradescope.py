@@ -11,7 +11,7 @@ from grader.reports.files import write_atomic
 from grader.reports.cause import criterion_feedback, criterion_measured, lead_lines, noticed
 from grader.reports.escape import markdown, one_line
 from grader.reports.markdown import criterion_markdown, noticed_markdown
-from grader.reports.text import fmt_points, percent
+from grader.reports.text import fmt_points, percent, replay_elsewhere_text
 
 UNFINISHED_MESSAGE = (
     "rosgrade started grading but did not finish, so no points could be given. The usual causes are a node that "
@@ -64,6 +64,9 @@ def gradescope_results(report: SubmissionReport, execution_time: float | None = 
         lines = [markdown(line) for line in lead_lines(task)] + noticed_markdown(noticed(task))
         if lines:
             summary += ["", f"**{markdown(task.title or task.id, line_start=False)}**", ""] + lines
+    watch = replay_elsewhere_text(report)  # Gradescope shows students no files, so no report.html either
+    if watch:
+        summary += ["", markdown(watch)]
     results: dict[str, Any] = {
         "score": report.score,
         "output": "\n".join(summary),

@@ -13,7 +13,7 @@ from grader.reports.escape import one_line, plain
 from grader.reports.html import data_uri
 from grader.reports.markdown import HIDDEN_TEXT
 from grader.reports.plots import Plot
-from grader.reports.text import NOTICED_HEADING, fmt_points, is_public, percent
+from grader.reports.text import NOTICED_HEADING, fmt_points, is_public, percent, replay_elsewhere_text
 
 MAX_BYTES = 1_000_000
 # Trajectory plots first: they are what students look at; commands and printed pose only if there is room.
@@ -43,7 +43,9 @@ def prairielearn_results(report: SubmissionReport, plots: Sequence[Plot] = (), m
         "gradable": True,
         "score": min(1.0, max(0.0, score)),
         "message": f"rosgrade: {fmt_points(report.score, report.max_score)} ({percent(report):.0f} %)",
-        "output": plain("\n".join(_task_output(t) for t in report.tasks if lead_lines(t) or t.diagnostics)),
+        # PrairieLearn shows the plots but no files: the replay is in the report a local check writes.
+        "output": plain("\n".join([*(_task_output(t) for t in report.tasks if lead_lines(t) or t.diagnostics),
+                                    replay_elsewhere_text(report)]).strip()),
         "tests": tests,
         "images": [],
     }

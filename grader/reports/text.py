@@ -103,6 +103,16 @@ def watch_first_text(report: SubmissionReport) -> str:
     return f"Watch first: the replay of {task.id}, scenario '{scenario}', in report.html."
 
 
+def replay_elsewhere_text(report: SubmissionReport) -> str:
+    """Where a student whose platform shows no files can watch the runs ('' without recordings)."""
+    first = watch_first(report)
+    if first is None:
+        return ""
+    task, scenario = first
+    return (f"To watch what your robot did, run `rosgrade check` on your package: its report.html replays every run. "
+            f"Watch first: {task.id}, scenario '{scenario}'.")
+
+
 def _scenarios(task: TaskReport) -> list[str]:
     """The task's recorded scenarios, named as its recordings' files are (<scenario>.mcap)."""
     return [recording.replace("\\", "/").rsplit("/", 1)[-1].rsplit(".", 1)[0] for recording in task.recordings]

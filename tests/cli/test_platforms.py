@@ -171,3 +171,18 @@ def test_all_platform_files_from_one_check(grading, submission, capsys):
     validate_gradescope(Path("gs.json").read_text())
     validate_prairielearn(Path("pl.json").read_text())
     validate_junit(Path("j.xml").read_text())
+
+
+def test_platforms_without_files_say_where_to_watch_the_replay_first():
+    report = fakes.make_report(radius_ok=False, recordings=["move_circle/nominal.mcap"])
+    pointer = "run `rosgrade check` on your package: its report.html replays every run"
+    gradescope_output = gradescope.gradescope_results(report)["output"]
+    prairielearn_output = prairielearn.prairielearn_results(report)["output"]
+    assert "Watch first: move" in gradescope_output and "report.html replays every run" in gradescope_output
+    assert pointer in prairielearn_output and "scenario 'nominal'" in prairielearn_output
+
+
+def test_platforms_say_nothing_of_a_replay_when_nothing_was_recorded():
+    report = fakes.make_report()
+    assert "report.html" not in gradescope.gradescope_results(report)["output"]
+    assert "report.html" not in prairielearn.prairielearn_results(report)["output"]
