@@ -6,7 +6,7 @@ import math
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
 from grader.metrics.motion import path_length, rest_since
 from grader.metrics.run import RunData
-from sim.profile import ProfileError, load_robot
+from sim.profile import Body, ProfileError, load_robot
 from sim.scenario import Box, Cylinder
 
 RAYS = 9  # parallel rays across the front edge: a pillar off the centre line still counts as ahead
@@ -43,15 +43,21 @@ def ray_distance(x: float, y: float, dx: float, dy: float, obstacle: Box | Cylin
     return near if near <= far else math.inf
 
 
-def ahead(run: RunData, x: float, y: float, yaw: float) -> tuple[float, str]:
-    """The free distance in front of a robot at (x, y, yaw), and what ends it: the shortest of parallel rays from
-    points across the front edge of its body, straight ahead."""
+def robot_body(run: RunData) -> Body:
+    """The run's robot's collision box, which distances to obstacles are measured from."""
     try:
         body = load_robot(run.robot).geometry.body
     except ProfileError:
         body = None
     if body is None:
-        raise MetricError(f"the robot {run.robot or '(not recorded)'} has no body outline to measure its front from")
+        raise MetricError(f"the robot {run.robot or '(not recorded)'} has no body outline to measure distances from")
+    return body
+
+
+def ahead(run: RunData, x: float, y: float, yaw: float) -> tuple[float, str]:
+    """The free distance in front of a robot at (x, y, yaw), and what ends it: the shortest of parallel rays from
+    points across the front edge of its body, straight ahead."""
+    body = robot_body(run)
     dx, dy = math.cos(yaw), math.sin(yaw)
     best, what = math.inf, ""
     for i in range(RAYS):
