@@ -1,55 +1,17 @@
 """The submission's own ROS 1 message packages in the node: ``from my_msgs.srv import AddInts`` works.
 
 The grader gives their definitions at START (genpy._msgdefs' format: comment-free text with full type names); this
-adds them to the table and puts a finder first on ``sys.meta_path`` that makes ``pkg``, ``pkg.msg`` and ``pkg.srv``
-lazy modules, as the static message packages beside this file are. A Python package of the same name on the path
-(catkin_python_setup) keeps its ``pkg`` module; its ``msg``/``srv`` submodules are still these, as catkin's
-devel space merges them.
+adds them to the table and makes ``pkg``, ``pkg.msg`` and ``pkg.srv`` importable (rosgrade_interface_packages).
 """
 from __future__ import annotations
 
-import importlib.abc
-import importlib.machinery
-import sys
-import types
-
 from genpy import _msgdefs
 from genpy._builder import lazy_exports
-
-_NAMESPACES = ("msg", "srv")
+from rosgrade_interface_packages import make_importable
 
 
 class InterfaceTableError(ValueError):
     """START's interfaces are not a definition table."""
-
-
-class _Loader(importlib.abc.Loader):
-    def create_module(self, spec: importlib.machinery.ModuleSpec) -> types.ModuleType | None:
-        return None
-
-    def exec_module(self, module: types.ModuleType) -> None:
-        if module.__name__.count(".") == 1:
-            module_getattr, module_dir, names = lazy_exports(module.__name__)
-            module.__getattr__, module.__dir__, module.__all__ = module_getattr, module_dir, names  # type: ignore
-        else:
-            module.__doc__ = f"{module.__name__}: the submission's messages (rosgrade's genpy)."
-
-
-class _Finder(importlib.abc.MetaPathFinder):
-    def __init__(self, packages: frozenset[str]) -> None:
-        self.packages = packages
-        self.loader = _Loader()
-
-    def find_spec(self, fullname: str, path: object = None,
-                  target: object = None) -> importlib.machinery.ModuleSpec | None:
-        parts = fullname.split(".")
-        if parts[0] not in self.packages or len(parts) > 2 or (len(parts) == 2 and parts[1] not in _NAMESPACES):
-            return None
-        if len(parts) == 1:
-            if importlib.machinery.PathFinder.find_spec(fullname) is not None:
-                return None  # the workspace's own Python package of that name
-            return importlib.machinery.ModuleSpec(fullname, self.loader, is_package=True)
-        return importlib.machinery.ModuleSpec(fullname, self.loader, is_package=False)
 
 
 def install(payload: dict) -> None:
@@ -63,5 +25,4 @@ def install(payload: dict) -> None:
     _msgdefs.MESSAGES.update(messages)
     _msgdefs.SERVICES.update(services)
     packages = frozenset(name.split("/")[0] for name in (*messages, *services))
-    if packages:
-        sys.meta_path.insert(0, _Finder(packages))
+    make_importable(packages, ("msg", "srv"), lazy_exports, "rosgrade's genpy")
