@@ -26,6 +26,13 @@ def test_the_front_is_measured_to_the_wall_ahead() -> None:
     assert m["moving_at_end"] is False and m["stopped_at_s"] == pytest.approx(3.431 / 0.2, abs=0.05)
 
 
+def test_the_scan_reads_the_wall_from_the_lidar_behind_the_front() -> None:
+    m = measure(_stopped_at(3.431, (END_WALL,)), Params())
+    # The Waffle's LiDAR sits 0.064 m behind its base frame: /scan reads 0.133 m more than the front's gap.
+    assert m["scan_distance"] == pytest.approx(4.0 - 3.431 + 0.064, abs=1e-3)
+    assert m["scan_distance"] - m["stop_distance"] == pytest.approx(FRONT + 0.064, abs=1e-9)
+
+
 def test_a_pillar_off_the_centre_line_but_in_the_robots_way_is_ahead() -> None:
     pillar = Cylinder(kind="cylinder", x=2.0, y=0.1, radius=0.05)  # misses the centre line, not the 0.266 m body
     m = measure(_stopped_at(1.0, (END_WALL, pillar)), Params())
