@@ -80,6 +80,29 @@ def test_a_goal_cancelled_while_it_executes_ends_canceled(tmp) -> None:
     assert [c.response["return_code"] for c in cancel] == [0]
 
 
+def test_server_callbacks_and_a_blocking_send_goal_as_real_rclpy_runs_them(tmp) -> None:
+    """What Jazzy's rclpy 7.1.6 printed for this node (5 runs of nodes/actions/callbacks.py, then named p16_*, under
+    the wheels' venv: `AMENT_PREFIX_PATH=$VENV RMW_IMPLEMENTATION=rmw_fastrtps_cpp $VENV/bin/python callbacks.py`,
+    Fibonacci from test_msgs; the same lines each time but the wall stamps and the traceback's library frames). Not a
+    conformance probe: under the harness's simulated clock the real side was stopped before it printed (unexplained)."""
+    result = run(RunSpec(scenario=Scenario(duration=3.0), nodes=(
+        NodeSpec(script=NODES / "callbacks.py", flavour="ros2"),)), tmp / "callbacks.mcap", tmp / "callbacks.log")
+    assert result.nodes[0].status == "exited", result.nodes[0].message
+    lines = Recording.open(tmp / "callbacks.mcap").output_lines()
+    assert [text for _, stream, text in lines if stream == "stdout"] == [
+        "wait_for_server -> True", "order 1 SUCCEEDED [0, 1]", "order 2 ABORTED []", "order 3 ABORTED [0, 1, 1, 2]",
+        "order 7 accepted False", "deferred goal status ACCEPTED result done False", "order 0 SUCCEEDED [0]", "end"]
+    logged = [text.split("] ", 2)[-1] for _, stream, text in lines if stream == "stderr" and text.startswith("[")]
+    assert logged == [
+        "[callbacks_server.action_server]: Error raised in execute callback: order 2 is not allowed",
+        "[callbacks_server.action_server]: Goal state not set, assuming aborted. Goal ID: [2 2 2 2 2 2 2 2 2 2 2 2 2 2 "
+        "2 2]",
+        "[callbacks_server.action_server]: Goal state not set, assuming aborted. Goal ID: [3 3 3 3 3 3 3 3 3 3 3 3 3 3 "
+        "3 3]",
+        "[callbacks_server.action_server]: Goal request callback did not return a GoalResponse type. Rejecting goal."]
+    assert "ValueError: order 2 is not allowed" in [text for _, stream, text in lines if stream == "stderr"]
+
+
 def test_the_run_repeats_bit_for_bit(tmp, fibonacci) -> None:
     _run(tmp, "again")
     assert (tmp / "again.mcap").read_bytes() == (tmp / "fibonacci.mcap").read_bytes()

@@ -12,7 +12,10 @@ from .. import _runtime
 from .._rclpy_pybind11 import PUBLISHER_CONTEXT_INVALID
 from .logging_severity import LoggingSeverity
 
-_RCLPY_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
+# As real rclpy's _internal_callers: only the logging modules' frames are skipped, so rclpy's own calls (an action
+# server's warnings) are keyed by their own call sites.
+_INTERNAL_CALLERS = (os.path.abspath(__file__),
+                     os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "logging.py"))
 _SEVERITY_LABEL = {10: "DEBUG", 20: "INFO", 30: "WARN", 40: "ERROR", 50: "FATAL"}
 _DEFAULT_FORMAT = "[{severity}] [{time}] [{name}]: {message}"
 
@@ -38,9 +41,9 @@ def set_level(name: str, level: int) -> None:
 
 
 def _caller_frame():
-    """The first frame outside rclpy (whose call site keys the filters)."""
+    """The first frame outside rclpy's logging modules (whose call site keys the filters)."""
     frame = sys._getframe(1)
-    while frame is not None and frame.f_code.co_filename.startswith(_RCLPY_DIR):
+    while frame is not None and frame.f_code.co_filename in _INTERNAL_CALLERS:
         frame = frame.f_back
     if frame is None:
         raise ValueError("Cannot get frame info if frame is None")
