@@ -33,8 +33,9 @@ class Params(MetricParams):
 def measure(run: RunData, params: Params) -> Measurement:
     """The goal's fate; a goal the grader never sent (its server never came up) is a MetricError saying so."""
     if params.goal >= len(run.action_goals):
-        raise MetricError(f"the grader's goal {params.goal + 1} was never sent: no node served the action's "
-                          "send_goal, get_result and cancel_goal services (is the ActionServer created and spinning?)")
+        raise MetricError(f"the grader's goal {params.goal + 1} was never sent: no node served the action (its "
+                          "send_goal, get_result and cancel_goal services) with the action type the task names; is "
+                          "the ActionServer created with that type and spinning?")
     goal = run.action_goals[params.goal]
     feedback = goal.feedback_t
     span = feedback[-1] - feedback[0] if len(feedback) > 1 else 0.0

@@ -92,7 +92,11 @@ class GoalSender:
         self._state = "waiting"  # then "sent", "running" (accepted, result asked), "done"
 
     def _offered(self) -> bool:
-        return all(self._router.server(f"{self._goal.action}/_action/{name}") is not None for name in _SERVICES)
+        """The three services served with the goal's types: with another action type, rclpy's client matches no
+        server, and ``ros2 action send_goal`` keeps waiting for one."""
+        calls = (self._goal.send_goal, self._goal.cancel, self._goal.get_result)
+        servers = [self._router.server(call.service) for call in calls]
+        return all(server is not None and server.type == call.type for server, call in zip(servers, calls))
 
     def next_ns(self) -> int | None:
         """When the loop must stop for this goal's next request (None: it waits for an answer or a server)."""
