@@ -15,6 +15,7 @@ from grader.interfaces import InterfaceSet, run_interfaces
 from grader.launch import LaunchError, find_packages, read_launch, turtlesim
 from grader.launch.specs import node_specs
 from grader.recording import Recording, RecordingError
+from grader.recording.ros2_messages import ACTIONS as BUILTIN_ACTIONS
 from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
 from grader.rubric import GRADER_NODES, Node, Rubric, Scenario, load_rubrics
 from grader.rubricfile import RubricFile, load_rubric_files, stamp
@@ -49,11 +50,16 @@ class _NoOwnType(Exception):
 
 
 def _own_type(name: str, interfaces: InterfaceSet | None) -> str:
-    """``name``, or for "*/srv/<Name>" the submission's own srv of that name (the first package's, by name)."""
+    """``name``, or for "*/srv/<Name>" ("*/action/<Name>") the submission's own srv (action) of that name (the first
+    package's, by name); an action the submission does not define is the built-in one of that name, as the action
+    tutorials use either (example_interfaces' Fibonacci, or their own with the same goal and result)."""
     if not name.startswith(OWN_TYPE):
         return name
     wanted = name[len(OWN_TYPE):]
-    owners = sorted(t for t in (interfaces.services if interfaces else {}) if t.split("/", 1)[-1] == wanted)
+    owned = [*(interfaces.services if interfaces else {}), *(interfaces.actions if interfaces else {})]
+    owners = sorted(t for t in owned if t.split("/", 1)[-1] == wanted)
+    if not owners and wanted.startswith("action/"):
+        owners = sorted(t for t in BUILTIN_ACTIONS if t.split("/", 1)[-1] == wanted)
     if not owners:
         kind, _, base = wanted.partition("/")
         raise _NoOwnType(f"no package in your submission generates the {kind} type {base} this task calls: write "
@@ -64,10 +70,12 @@ def _own_type(name: str, interfaces: InterfaceSet | None) -> str:
 
 def _with_own_types(scenario: Scenario, nodes: tuple[NodeSpec, ...], interfaces: InterfaceSet | None,
                     ) -> tuple[Scenario, tuple[NodeSpec, ...]]:
-    """The scenario's calls and the nodes' arguments with every "*/srv/<Name>" made the submission's own type."""
+    """The scenario's calls and goals and the nodes' arguments with every "*/srv/<Name>" ("*/action/<Name>") made the
+    submission's own type."""
     calls = [call.model_copy(update={"type": _own_type(call.type, interfaces)}) for call in scenario.service_calls]
+    goals = [goal.model_copy(update={"type": _own_type(goal.type, interfaces)}) for goal in scenario.action_goals]
     nodes = tuple(replace(spec, args=tuple(_own_type(arg, interfaces) for arg in spec.args)) for spec in nodes)
-    return scenario.model_copy(update={"service_calls": calls}), nodes
+    return scenario.model_copy(update={"service_calls": calls, "action_goals": goals}), nodes
 
 
 def _script_names(node: Node) -> list[str]:

@@ -147,11 +147,12 @@ class ActionGoalSpec(_Model):
     """An action goal the grader sends at ``t`` seconds after the start, as ``ros2 action send_goal <action> <type>
     <goal>`` would: it waits for the action's server, sends the goal and, once accepted, waits for its result; with
     ``cancel_at``, Ctrl+C then cancels the goal if it has not ended (``ros2 action send_goal``'s own cancel). ``type``
-    is ``pkg/action/Name``; ``goal`` gives the fields of its Goal. Goals run side by side, each as its own command."""
+    is ``pkg/action/Name`` (a rubric's ``*/action/Name``: the submission's own action of that name, else the built-in
+    one); ``goal`` gives the fields of its Goal. Goals run side by side, each as its own command."""
 
     t: NonNegative
     action: Annotated[str, Field(pattern=r"^/[A-Za-z0-9_/]+$")]
-    type: Annotated[str, Field(pattern=r"^[A-Za-z0-9_]+/action/[A-Za-z0-9_]+$")]
+    type: Annotated[str, Field(pattern=r"^(\*|[A-Za-z0-9_]+)/action/[A-Za-z0-9_]+$")]
     goal: dict[str, JsonValue] = Field(default_factory=dict)
     cancel_at: NonNegative | None = None
 

@@ -19,6 +19,7 @@ pytestmark = pytest.mark.slow
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = ROOT / "reference_solutions_ros2" / "py_action"
 NO_CANCEL = ROOT / "submissions_example" / "wes_ros2_action_no_cancel"
+OWN_ACTION = ROOT / "submissions_example" / "yara_ros2_action_tutorial"
 
 
 @pytest.fixture(scope="module")
@@ -54,6 +55,14 @@ def test_the_recording_rescores_identically_and_repeats_bit_for_bit(reference, t
     assert [c.model_dump() for c in again.criteria] == [c.model_dump() for c in reference.criteria]
     second = grade_submission(PACKAGE, tmp_path, ["fibonacci"]).tasks[0]
     assert Path(second.recordings[0]).read_bytes() == Path(reference.recordings[0]).read_bytes()
+
+
+def test_the_submissions_own_fibonacci_action_is_the_one_the_goals_are_sent_as(graded):
+    result = graded(OWN_ACTION, ("fibonacci",)).tasks[0]
+    assert result.score == result.max_score, {c.id: c.feedback for c in result.criteria}
+    channels = {i.topic: i.type for i in Recording.open(result.recordings[0]).topics() if "fibonacci" in i.topic}
+    assert channels["/rosgrade/service/fibonacci/_action/send_goal/request"] == (
+        "custom_action_interfaces/action/Fibonacci_SendGoal_Request")
 
 
 def test_a_server_without_a_cancel_callback_loses_only_cancel_stops(graded):
