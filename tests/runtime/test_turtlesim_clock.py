@@ -24,7 +24,9 @@ def test_the_wiki_move_node_drives_its_distance_on_turtlesim(tmp_path):
     assert "start time is zero: False wallclock: True" in (tmp_path / "run.log").read_text()
     recording = Recording.open(tmp_path / "run.mcap")
     truth = recording.ground_truth()
-    assert truth.x[-1] - truth.x[0] == pytest.approx(2.0, abs=0.05)
+    # Its publisher connects 0.1 s after it is made while the node busy-loops (real rospy: 0.03-0.16 s, median
+    # 0.10), so the first 0.1 s of its 1 m/s commands are lost, as on a real turtlesim: 1.9 m of the 2 m.
+    assert truth.x[-1] - truth.x[0] == pytest.approx(1.9, abs=0.02)
     # turtlesim's own node publishes the world's topics (a robot's are Gazebo's)
     assert {t.callerid for t in recording.topics() if t.topic == "/turtle1/pose"} == {"/turtlesim"}
 
