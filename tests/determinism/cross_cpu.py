@@ -8,7 +8,8 @@ ways and prints what differs:
   Haswell kernels, in the grader and, through the environment it hands on, nowhere else (nodes get a clean one);
 * ``haswell``: the grader under ``qemu-x86_64 -cpu Haswell`` (Debian's qemu-user), a CPU without AVX-512, so that
   MuJoCo, numpy and OpenBLAS all run another CPU's code paths. The nodes still run natively: qemu-user does not
-  follow the grader's exec of the node's interpreter.
+  follow the grader's exec of the node's interpreter;
+* ``sandybridge`` (asked for with ``--ways``): the same on a CPU with AVX but neither AVX2 nor FMA.
 
 The test beside it (test_cross_cpu.py) runs one TurtleBot task the first and last way.
 """
@@ -32,6 +33,8 @@ WAYS = {
     "native": ([], {}),
     "numpy-baseline": ([], {"NPY_DISABLE_CPU_FEATURES": NUMPY_BASELINE, "OPENBLAS_CORETYPE": "Haswell"}),
     "haswell": ([QEMU or "qemu-x86_64", "-cpu", "Haswell"], {}),
+    # AVX without AVX2 and FMA: the oldest CPU MuJoCo's wheel runs on; glibc's libm then takes its non-FMA paths.
+    "sandybridge": ([QEMU or "qemu-x86_64", "-cpu", "SandyBridge"], {}),
 }
 
 
@@ -116,12 +119,12 @@ def main() -> int:
     parser.add_argument("targets", nargs="+", type=Path)
     parser.add_argument("--task", action="append", default=[])
     parser.add_argument("--out", type=Path, default=Path("/tmp/rosgrade-cross-cpu"))
-    parser.add_argument("--ways", default="native,numpy-baseline,haswell")
+    parser.add_argument("--ways", default="native,numpy-baseline,haswell", help=f"of {', '.join(WAYS)}")
     args = parser.parse_args()
     ways = args.ways.split(",")
-    if "haswell" in ways and QEMU is None:
-        print("qemu-x86_64 not found (Debian: apt install qemu-user): the haswell way is left out")
-        ways.remove("haswell")
+    if QEMU is None and any(WAYS[way][0] for way in ways):
+        print("qemu-x86_64 not found (Debian: apt install qemu-user): the emulated ways are left out")
+        ways = [way for way in ways if not WAYS[way][0]]
     print(f"{'submission':40} {'way':15} {'wall s':>7} {'same files':>10} {'differ':>6} {'grades differ':>13} "
           f"{'last bits':>9}")
     for target in args.targets:
