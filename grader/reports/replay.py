@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 
 # The turtlesim picture's replay, step by step: the strokes are the picture's, only kept with their times.
+from grader.metrics.collisions import Params as TouchParams
+from grader.metrics.collisions import touches
 from grader.metrics.pen import _events, _move, _Params, _serve
 from grader.metrics.run import TURTLE_POSE_TOPIC, ParamChange, RunData, RunInfo, Trajectory
 from grader.metrics.run import obstacles as recorded_obstacles
@@ -46,7 +48,7 @@ FOOTPRINTS = {
 VIEW_MARGIN_M = 0.5  # around what the robot world shows
 MIN_ASPECT = 0.6  # its height to width at least (and width to height)
 TURTLE_M = 0.45  # the turtle image's size in the window
-MAX_HITS = 20  # wall hits marked on the timeline
+MAX_HITS = 20  # wall hits (and touches of obstacles) marked on the timeline
 # Quantities that say when a criterion was decided, in seconds after the start: a metric that knows reports
 # decided_at_s; the others are older metrics' own times (the first wall hit, when the robot stopped).
 FROM_START = ("decided_at_s", "first_hit_s", "stopped_at_s", "judged_until_s")
@@ -230,7 +232,8 @@ def _moment(measured: dict[str, Any], start: float, ctrl_c: float | None, end: f
 
 
 def _events_of(task: TaskReport, scenario: str, run: RunData, start: float, end: float) -> list[list[Any]]:
-    """[t, kind, text, criterion id] for Ctrl+C, the node's exit, wall hits and the criteria decided in this run."""
+    """[t, kind, text, criterion id] for Ctrl+C, the node's exit, wall hits, the robot's touches of walls and pillars
+    and the criteria decided in this run."""
     events: list[list[Any]] = []
     ctrl_c = run.shutdown_time()
     if ctrl_c is not None:
@@ -238,6 +241,8 @@ def _events_of(task: TaskReport, scenario: str, run: RunData, start: float, end:
     hits = [line for line in run.lines if line.stream == "rosout" and WALL_WARNING in line.text]
     for line in hits[:MAX_HITS]:
         events.append([_r(line.t - start, 2), "hit", "the turtle hit the wall", ""])
+    for touch in touches(run.contacts, TouchParams().gap_s)[:MAX_HITS]:  # touches as the collisions metric counts
+        events.append([_r(touch.t - start, 2), "hit", f"the robot touched the {touch.obstacle}", ""])
     info = run.run
     if info.ended_s is not None:
         events.append([_r(info.ended_s - start, 2), "exit", _ending(info), ""])

@@ -3,12 +3,13 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
 from grader.cli import main
-from grader.metrics.run import Commands, OutputLine, RunData, Trajectory
+from grader.metrics.run import Commands, Contact, OutputLine, RunData, Trajectory
 from grader.report import SubmissionReport, TaskReport
 from grader.reports.replay import MAX_BYTES, replay_of
 from grader.reports.text import watch_first
@@ -140,3 +141,12 @@ def test_walls_and_pillars_are_in_the_view():
                                   {"kind": "box", "x": 2.5, "y": 1.0, "a": 0.3, "l": 0.2, "w": 2.0}]
     x0, y0, x1, y1 = world["bounds"]
     assert x0 < -0.5 < x1 and y0 < -0.8 and x1 > 2.5
+
+
+def test_the_robot_touching_a_wall_is_an_event_once_per_touch():
+    robot = runs.Recording("turtlebot3_waffle", shutdown_at=15.0, obstacles=[runs.PILLAR, runs.WALL])
+    # 20 ms apart is one touch that lasts; a second later it is another.
+    contacts = tuple(Contact(t=runs.START + t, obstacle="end wall", x=2.4, y=1.0) for t in (9.0, 9.02, 9.04, 10.5))
+    replay = replay_of(runs.robot_task(), "nominal", robot, replace(runs.robot_run(), contacts=contacts))
+    hits = [(t, text) for t, kind, text, _ in data(replay)["events"] if kind == "hit"]
+    assert hits == [(9.0, "the robot touched the end wall"), (10.5, "the robot touched the end wall")]
