@@ -20,7 +20,7 @@ from multiprocessing.connection import Connection
 from typing import Any, Literal, NoReturn
 
 from grader.submission import OWNER_FILE, STAGE_PREFIX, claim, remove_if_abandoned
-from grader.workers import die_with_parent
+from grader.workers import ctrl_c_after_fork, die_with_parent
 
 SCRATCH_PREFIX = "rosgrade-worker-"
 
@@ -66,12 +66,23 @@ class RunningJob:
         importlib.import_module("grader.grading")  # imported once here rather than again in every child
         read_fd, write_fd = os.pipe()
         # Forked directly (not with multiprocessing), so this also works inside Dask's daemonic worker processes.
-        self.pid = os.fork()
-        if self.pid == 0:  # the child never returns from here
-            os.close(read_fd)
-            _child(job, Connection(write_fd, readable=False), self.scratch, self.stage_root)
+        interrupted = False
+        try:
+            with ctrl_c_after_fork():
+                self.pid = os.fork()
+                if self.pid == 0:  # the child never returns from here
+                    os.close(read_fd)
+                    _child(job, Connection(write_fd, readable=False), self.scratch, self.stage_root)
+                # Its own group from here, whichever of the two runs first, so that a kill of the group reaches it.
+                with contextlib.suppress(OSError):
+                    os.setpgid(self.pid, self.pid)
+        except KeyboardInterrupt:
+            interrupted = True
         os.close(write_fd)
         self.reader = Connection(read_fd, writable=False)
+        if interrupted:  # Ctrl+C during the fork: no one else knows of this child yet
+            self.stop()
+            raise KeyboardInterrupt
 
     def expired(self) -> bool:
         """Whether the job has used up its time."""

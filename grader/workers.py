@@ -12,8 +12,9 @@ import os
 import pickle
 import signal
 import sys
+import threading
 import traceback
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from multiprocessing.connection import Connection, wait
 from typing import NoReturn, TypeVar
 
@@ -61,13 +62,40 @@ def fork_map(function: Callable[[T], R], items: Sequence[T], jobs: int = 1, *,
     return [results[i] for i in range(len(items))]
 
 
+@contextlib.contextmanager
+def ctrl_c_after_fork() -> Iterator[None]:
+    """Hold a Ctrl+C that comes while the parent forks until the fork is over, then raise it. A KeyboardInterrupt
+    raised in the fork's own hooks (logging releases its lock there) is printed and dropped by Python: a child that
+    Ctrl+C'd its parent at once was lost that way on a busy machine, and the batch went on."""
+    if threading.current_thread() is not threading.main_thread():
+        yield  # signals reach the main thread only
+        return
+    parent, caught = os.getpid(), []
+    previous = signal.signal(signal.SIGINT, lambda signum, frame: caught.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if caught and os.getpid() == parent:
+        if previous is signal.default_int_handler:
+            raise KeyboardInterrupt  # here, where the caller can still stop the child it just started
+        os.kill(parent, signal.SIGINT)  # to whatever handles Ctrl+C instead
+
+
 def _fork(function: Callable[[T], R], item: T) -> tuple[Connection, int]:
     read_fd, write_fd = os.pipe()
-    pid = os.fork()
-    if pid == 0:
+    try:
+        with ctrl_c_after_fork():
+            pid = os.fork()
+            if pid == 0:
+                os.close(read_fd)
+                _child(function, item, Connection(write_fd, readable=False))
+    except KeyboardInterrupt:
+        _kill(pid)  # Ctrl+C during the fork: no one else knows of this worker yet
         os.close(read_fd)
-        _child(function, item, Connection(write_fd, readable=False))
-    os.close(write_fd)
+        raise
+    finally:
+        os.close(write_fd)
     return Connection(read_fd, writable=False), pid
 
 

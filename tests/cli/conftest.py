@@ -1,6 +1,7 @@
 """Fixtures for the CLI tests: fake grading, rubric, scoring and recording modules and a clean working folder."""
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -17,6 +18,7 @@ def grading(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> Path:
     fakes.install(monkeypatch, "grader.recording", fakes.recording_module())
     log = tmp_path / "calls.log"
     monkeypatch.setenv(fakes.CALL_LOG_ENV, str(log))
+    monkeypatch.setenv(fakes.BATCH_PID_ENV, str(os.getpid()))
     monkeypatch.delenv("GITHUB_STEP_SUMMARY", raising=False)
     monkeypatch.delenv("GITHUB_OUTPUT", raising=False)
     monkeypatch.setenv("COLUMNS", "200")  # one table row per line, so assertions can match cell text

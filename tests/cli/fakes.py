@@ -16,6 +16,7 @@ import numpy as np
 from grader.report import CriterionResult, RubricStamp, SubmissionReport, TaskReport
 
 CALL_LOG_ENV = "ROSGRADE_TEST_CALL_LOG"
+BATCH_PID_ENV = "ROSGRADE_TEST_BATCH_PID"  # who 'interrupt' sends Ctrl+C to: the test's own process
 RUBRICS_ENV = "ROSGRADE_TEST_RUBRICS"  # the folder the fake rubrics name as their files (default: rubrics/)
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -90,7 +91,7 @@ def fake_grade_submission(submission: Path, out_dir: Path, task_ids: Any = None,
     if "bad" in name:
         raise SubmissionError(f"{submission}: no ROS scripts (*.py) found")
     if "interrupt" in name:
-        os.kill(os.getppid(), signal.SIGINT)
+        os.kill(int(os.environ.get(BATCH_PID_ENV) or os.getppid()), signal.SIGINT)
         time.sleep(30)
     if "slow" in name:
         time.sleep(30)

@@ -2,11 +2,13 @@
 from __future__ import annotations
 
 import os
+import signal
+import time
 
 import pytest
 
 from grader import timing
-from grader.workers import WorkerError, fork_map
+from grader.workers import WorkerError, ctrl_c_after_fork, fork_map
 
 
 def _square_and_pid(n: int) -> tuple[int, int]:
@@ -58,3 +60,14 @@ def test_the_workers_timings_are_added_to_the_parents() -> None:
     with timing.collect() as stages:
         fork_map(_square_and_pid, [1, 2, 3], 2)
     assert stages["# items"] == 3.0
+
+
+def test_a_ctrl_c_during_a_fork_is_raised_once_the_fork_is_over():
+    reached_end = False
+    with pytest.raises(KeyboardInterrupt):
+        with ctrl_c_after_fork():
+            os.kill(os.getpid(), signal.SIGINT)  # as a child that Ctrl+C's its parent at once
+            time.sleep(0.05)  # the handler runs here: held, not raised (nor dropped, as in the fork's own hooks)
+            reached_end = True
+    assert reached_end
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
