@@ -20,7 +20,10 @@
     return found;
   }
 
-  function fmt(v, digits) { return (Math.abs(v) < 0.5 * Math.pow(10, -digits) ? 0 : v).toFixed(digits); }
+  function fmt(v, digits) {
+    if (typeof v === "string") { return v; }  // inf or nan, as the node commanded it
+    return (Math.abs(v) < 0.5 * Math.pow(10, -digits) ? 0 : v).toFixed(digits);
+  }
 
   function Replay(section) {
     var data = JSON.parse(section.querySelector("script.rp-data").textContent);

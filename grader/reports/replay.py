@@ -266,13 +266,19 @@ def _ending(info: RunInfo) -> str:
     return f"your node ended ({info.status or 'unknown'})"
 
 
-def _commands(run: RunData, start: float, every_s: float) -> list[list[float]]:
+def _finite_or_text(value: float) -> float | str:
+    """A command's value for the page: inf and nan as text ("inf"), which JSON can carry and the page shows as is (a
+    node that divides by a beam that hit nothing commands inf)."""
+    return _r(value, 2) if math.isfinite(value) else str(value)
+
+
+def _commands(run: RunData, start: float, every_s: float) -> list[list[float | str]]:
     """[t, linear.x, angular.z] when the command in force changed, at most once per ``every_s`` (the last one of
     each bin: a controller that changes its command every cycle reads the same on a page)."""
     rows: list[list[float]] = []
     commands = run.commands
     for t, linear, angular in zip(commands.t.tolist(), commands.linear[:, 0].tolist(), commands.angular[:, 2].tolist()):
-        row = [_r(t - start, 2), _r(linear, 2), _r(angular, 2)]
+        row = [_r(t - start, 2), _finite_or_text(linear), _finite_or_text(angular)]
         if rows and rows[-1][1:] == row[1:]:
             continue
         if rows and math.floor(rows[-1][0] / every_s) == math.floor(row[0] / every_s):

@@ -150,3 +150,16 @@ def test_the_robot_touching_a_wall_is_an_event_once_per_touch():
     replay = replay_of(runs.robot_task(), "nominal", robot, replace(runs.robot_run(), contacts=contacts))
     hits = [(t, text) for t, kind, text, _ in data(replay)["events"] if kind == "hit"]
     assert hits == [(9.0, "the robot touched the end wall"), (10.5, "the robot touched the end wall")]
+
+
+def test_an_infinite_command_is_shown_as_text_and_the_data_stays_json():
+    robot = runs.Recording("turtlebot3_waffle", shutdown_at=15.0, obstacles=[runs.PILLAR, runs.WALL])
+    run = runs.robot_run()
+    linear = np.where(run.commands.t > runs.START + 5.0, np.inf, runs.SPEED)
+    commands = Commands.of(run.commands.t, linear, np.full(len(linear), runs.TURN))
+    replay = replay_of(runs.robot_task(), "nominal", robot, replace(run, commands=commands))
+
+    def refuse(constant: str) -> float:
+        raise ValueError(f"{constant} is not JSON: the browser's JSON.parse stops at it")
+    rows = json.loads(replay.data, parse_constant=refuse)["commands"]
+    assert rows[-1][1] == "inf" and isinstance(rows[0][1], float)
