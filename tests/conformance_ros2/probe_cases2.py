@@ -32,6 +32,9 @@ class Case:
     commands: tuple[str, ...] | None = None   # summarise_commands lines; None: /cmd_vel is not compared
     markers: bool = False
     volatile: tuple[str, ...] = ()
+    # The real library itself can hang in this probe (a race of its own): a real run the harness had to kill is then
+    # no reference, and if every real run hung the comparison is skipped, saying so.
+    real_may_hang: str = ""
 
     @property
     def path(self) -> Path:
@@ -281,7 +284,9 @@ CASES = [
         "end",
     ), stderr_empty=True),
     # An action's goal, feedback, cancel and result (issue 28), as rcl_action builds them from services and topics.
-    Case("p15_actions", "p15_actions.py", duration=12.0, stdout=(
+    Case("p15_actions", "p15_actions.py", duration=12.0, real_may_hang=(
+        "real rclpy 7.1's ActionClient.send_goal_async sends the goal before it registers the reply's future, and "
+        "hung when the reply came first"), stdout=(
         "wait_for_server -> True",
         "goal accepted True",
         "result SUCCEEDED [0, 1, 1, 2, 3]",

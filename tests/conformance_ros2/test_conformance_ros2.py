@@ -148,10 +148,16 @@ def _check_reference(case: Case, result) -> list[str]:
 @pytest.mark.parametrize("case", CASES, ids=IDS)
 def test_same_as_real_rclpy(case: Case, real_outputs: _RealCache, our_outputs: _OursCache) -> None:
     ours = our_outputs.get(case)
+    compared = 0
     for real in real_outputs.runs(case):
+        if case.real_may_hang and _exit_code(real) is None:
+            continue
+        compared += 1
         problems = _differences(case, real, ours)
         if not problems:
             return
+    if not compared:
+        pytest.skip(f"{case.id}: every real run hung and was killed ({case.real_may_hang})")
     pytest.fail(f"{case.id}: {len(problems)} difference(s) from real rclpy (in each of {REAL_ATTEMPTS} real runs; "
                 "the last shown):\n" + "\n".join(problems) + "\n\n" + _describe("real", real) + _describe("ours", ours))
 
@@ -163,10 +169,16 @@ def test_reference_behaviour(case: Case, side: str, request: pytest.FixtureReque
         results = [request.getfixturevalue("our_outputs").get(case)]
     else:
         results = request.getfixturevalue("real_outputs").runs(case)
+    checked = 0
     for result in results:
+        if side == "real" and case.real_may_hang and _exit_code(result) is None:
+            continue
+        checked += 1
         problems = _check_reference(case, result)
         if not problems:
             return
+    if not checked:
+        pytest.skip(f"{case.id}: every real run hung and was killed ({case.real_may_hang})")
     pytest.fail(f"{case.id} ({side}):\n" + "\n".join(problems) + "\n\n" + _describe(side, result))
 
 
