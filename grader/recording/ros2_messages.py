@@ -19,7 +19,8 @@ from grader.recording.errors import RecordingError
 
 _TYPE_NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)/(?:(msg|srv|action)/)?([A-Za-z][A-Za-z0-9_]*)$")
 
-_EXTRA_TYPES = {
+# turtlesim's messages (rosbags' Jazzy store lacks them), as in their Jazzy .msg files.
+TURTLESIM_MESSAGES = {
     "turtlesim/msg/Pose": "float32 x\nfloat32 y\nfloat32 theta\n\nfloat32 linear_velocity\nfloat32 angular_velocity\n",
     "turtlesim/msg/Color": "uint8 r\nuint8 g\nuint8 b\n",
 }
@@ -43,8 +44,10 @@ CANCEL_GOAL = {"action_msgs/srv/CancelGoal": (
     "int8 ERROR_NONE=0\nint8 ERROR_REJECTED=1\nint8 ERROR_UNKNOWN_GOAL_ID=2\nint8 ERROR_GOAL_TERMINATED=3\n"
     "int8 return_code\naction_msgs/GoalInfo[] goals_canceling")}
 
-# Built-in actions as (goal, result, feedback) definitions: example_interfaces' Fibonacci (the action tutorial's).
-ACTIONS = {"example_interfaces/action/Fibonacci": ("int32 order", "int32[] sequence", "int32[] sequence")}
+# Built-in actions as (goal, result, feedback) definitions: example_interfaces' Fibonacci (the action tutorial's) and
+# turtlesim's RotateAbsolute (each turtle's rotate_absolute, the CLI tutorials' action).
+ACTIONS = {"example_interfaces/action/Fibonacci": ("int32 order", "int32[] sequence", "int32[] sequence"),
+           "turtlesim/action/RotateAbsolute": ("float32 theta", "float32 delta", "float32 remaining")}
 
 # Services as (request, response) definitions.
 SERVICES = {
@@ -77,7 +80,7 @@ def ros2_type_name(type_name: str) -> str:
 def _catalog_typestore() -> Typestore:
     store = get_typestore(Stores.ROS2_JAZZY)
     types = {}
-    for name, text in _EXTRA_TYPES.items():
+    for name, text in TURTLESIM_MESSAGES.items():
         types.update(get_types_from_msg(text, name))
     for name, (request, response) in SERVICES.items():
         for part, text in (("Request", request), ("Response", response)):

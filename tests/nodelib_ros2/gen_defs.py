@@ -12,13 +12,14 @@ from rosbags.typesys.base import Nodetype
 from rosbags.typesys.store import Typestore
 
 from grader.interfaces.derived import action_types, service_types
-from grader.recording.ros2_messages import ACTIONS, CANCEL_GOAL, RCL_INTERFACES_SERVICES, rihs01_hasher
+from grader.recording.ros2_messages import (ACTIONS, CANCEL_GOAL, RCL_INTERFACES_SERVICES, SERVICES as CATALOG_SERVICES,
+                                           TURTLESIM_MESSAGES, rihs01_hasher)
 
 TARGET = Path(__file__).resolve().parents[2] / "grader" / "nodelib" / "ros2" / "rosgrade_rosidl" / "_defs.py"
 
 PACKAGES = ("builtin_interfaces", "std_msgs", "geometry_msgs", "nav_msgs", "sensor_msgs", "rosgraph_msgs",
             "rcl_interfaces", "tf2_msgs", "service_msgs", "std_srvs", "example_interfaces", "action_msgs",
-            "unique_identifier_msgs")
+            "unique_identifier_msgs", "turtlesim")
 
 # rosbags drops .msg default values; these are every default in the covered Jazzy packages (rosidl's *__DEFAULT).
 DEFAULTS = {
@@ -28,7 +29,8 @@ DEFAULTS = {
 }
 
 # rosbags has no services: std_srvs, example_interfaces' AddTwoInts (the ROS 2 service tutorial's), every node's
-# parameter services and every action's CancelGoal as (request, response) .msg text, as in their Jazzy .srv files.
+# parameter services, every action's CancelGoal and turtlesim's, as (request, response) .msg text, as in their Jazzy
+# .srv files.
 SERVICES = {
     "example_interfaces/srv/AddTwoInts": ("int64 a\nint64 b", "int64 sum"),
     **RCL_INTERFACES_SERVICES,
@@ -36,6 +38,7 @@ SERVICES = {
     "std_srvs/srv/Empty": ("", ""),
     "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),
     "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
+    **{name: parts for name, parts in CATALOG_SERVICES.items() if name.startswith("turtlesim/")},
 }
 
 _DUMMY = "structure_needs_at_least_one_member"
@@ -57,6 +60,8 @@ def _action_services(action: str) -> list[str]:
 def typestore() -> Typestore:
     """Jazzy types plus the services above."""
     store = get_typestore(Stores.ROS2_JAZZY)
+    for name, text in TURTLESIM_MESSAGES.items():
+        store.register(get_types_from_msg(text, name))
     for service, (request, response) in SERVICES.items():
         store.register(_service_types(service, request, response))
     for action, parts in ACTIONS.items():

@@ -30,7 +30,10 @@ def test_hashes_are_rosbags_rihs01():
                              "example_interfaces/action/Fibonacci_SendGoal",
                              "example_interfaces/action/Fibonacci_GetResult", *(f"rcl_interfaces/srv/{name}" for name in (
                                  "DescribeParameters", "GetParameterTypes", "GetParameters", "ListParameters",
-                                 "SetParameters", "SetParametersAtomically"))}
+                                 "SetParameters", "SetParametersAtomically")),
+                             *(f"turtlesim/srv/{name}" for name in (
+                                 "Kill", "SetPen", "Spawn", "TeleportAbsolute", "TeleportRelative")),
+                             "turtlesim/action/RotateAbsolute_SendGoal", "turtlesim/action/RotateAbsolute_GetResult"}
     assert all(h.startswith("RIHS01_") and len(h) == 71 for h in services.values())
 
 
@@ -52,7 +55,7 @@ def test_action_types_hash_as_the_jazzy_wheels_describe_them():
         "RIHS01_573d8b0a534451d7bc2ac8c5ffde8ac14b8593b7001175d0cd6516dcbeb8689a")
     assert messages["action_msgs/msg/GoalStatusArray"][2] == (
         "RIHS01_6c1684b00f177d37438febe6e709fc4e2b0d4248dca4854946f9ed8b30cda83e")
-    assert set(actions) == {"example_interfaces/action/Fibonacci"}
+    assert set(actions) == {"example_interfaces/action/Fibonacci", "turtlesim/action/RotateAbsolute"}
     parts = [next(iter(get_types_from_msg(text, "pkg/msg/Part").values()))
              for text in ("int32 order", "int32[] sequence", "int32[] sequence")]
     catalog = Ros2Catalog(action_types("test_msgs/action/Fibonacci", *parts))

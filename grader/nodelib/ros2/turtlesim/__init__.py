@@ -1,0 +1,1 @@
+"""ROS 2 turtlesim interfaces (rosgrade's rosidl runtime): Pose, Color, its services and RotateAbsolute."""
