@@ -18,6 +18,10 @@ from grader.recording import MessageCatalog, RecordingError
 from grader.runtime import frames
 
 
+# The robot's base as a receiver of a node's publications (node subscribers are (node index, handle) pairs).
+ROBOT = "robot"
+
+
 class ProtocolViolation(Exception):
     """The node sent something that is not a valid frame; it is stopped with this message."""
 
@@ -49,7 +53,7 @@ class Endpoint:
     closed: bool = False
     dropped_before_connect: int = 0
     latched: Latched | None = None  # a latched publisher's last message
-    ready_ns: int | None = None  # when a publisher connects, once the session has decided it (session._ready_ns)
+    ready_ns: int | None = None  # when a publisher connects, once the session has decided it (Session.ready_ns)
     last_data: bytes | None = None  # a publisher's last message (the node keeps it too: see inert batches)
 
 

@@ -24,8 +24,9 @@ from grader.nodelib.common import rosgrade_channel as ch
 from grader.recording import Recorder
 from grader.runtime import confine
 from grader.runtime.cpu_claim import one_cpu
+from grader.runtime.lookahead import Lookahead, Pace, Speculation
 from grader.runtime.diagnostics import diagnose, topic_summary
-from grader.runtime.node_link import (Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
+from grader.runtime.node_link import (ROBOT, Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
                                       NodeOverLimit, NodeSilent, OutputLine, ParamChange, ProtocolViolation,
                                       Publication, ServiceAnswer, ServiceCall, ServiceOffer, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
@@ -44,12 +45,6 @@ CONNECT_DELAY_NS = 50_000_000
 # ...unless the node is in a busy loop then: rospy's threads that answer the subscriber (requestTopic, the TCPROS
 # header) wait for the GIL. Real rospy 1.15.15, busy from the Publisher on: 0.03-0.16 s, median 0.10 s (13 runs).
 BUSY_CONNECT_DELAY_NS = 100_000_000
-# ROS 2: a node's DDS participant (made with its first node) discovers the world's and is discovered this long
-# after: its endpoints made before match then, and /clock and the world's topics reach it from then on. Real rclpy
-# (Fast DDS) is bimodal, 0.001-0.45 s or about 3 s (a missed announcement); this is the fast mode. DEVELOPERS.md.
-DISCOVERY_NS = 100_000_000
-# The robot's base as a receiver of latched messages (node subscribers are (node index, handle) pairs).
-ROBOT = "robot"
 # Publications that never reached a subscriber are recorded under this prefix, apart from what the robot received.
 LOST_PREFIX = "/rosgrade/lost"
 # A node's publications on a topic only the world or the grader publish are recorded under this prefix, never
@@ -63,18 +58,6 @@ EXIT_WAIT_WALL_S = 5.0
 WORKROOT_PREFIX = "rosgrade-node-"
 # Wall seconds between two looks at what all of a node's processes use together (a /proc walk: not every step).
 USAGE_PERIOD_S = 1.0
-# The most later moments one BATCH carries (0: none, the plain lockstep). A node that stops early gets fewer next
-# time: the world run ahead past the moment it stopped at is taken back, and so wasted.
-MAX_MOMENTS = 64
-# How far past its wake-up the world runs ahead of a node, at most and at first: the node runs on its own there
-# while it only repeats its command (or logs, prints); a node that acts there costs the world run past that point.
-MAX_FREE_NS = 250_000_000
-FIRST_FREE_NS = 50_000_000
-# How far the world runs ahead of a node that waits only for messages.
-MAX_AHEAD_NS = 2_000_000_000
-# Sim time between two snapshots of a world run ahead: a snapshot costs about what 2 ms of physics do, and taking the
-# world back re-runs the physics from the last one before the moment the node stopped at.
-SNAPSHOT_SPACING_NS = 100_000_000
 
 
 class RunError(Exception):
@@ -105,18 +88,16 @@ class _Node:
     told_connections: dict[int, int] = field(default_factory=dict)
     term_ns: int | None = None
     kill_ns: int | None = None
-    # How far the world runs ahead of it: later moments its next BATCH may carry (doubled while it runs them all),
-    # and, after batches whose first moment it already acted at, delivery steps taken one by one before trying again.
-    moments_cap: int = 1
-    misses: int = 0
-    pause: int = 0
-    # How far past its wake-up the world runs ahead (0: to the wake-up only, until the node wakes and only
-    # repeats what it did, since it acted at its wake-up itself last time).
-    free_ns: int = FIRST_FREE_NS
+    pace: Pace = field(default_factory=Pace)  # how far the world runs ahead of it (grader/runtime/lookahead)
 
     @property
     def callerid(self) -> str:
         return self.link.state.name or "/unnamed"
+
+    def listening(self, topic: str, type_name: str) -> Iterator[Endpoint]:
+        """The node's open subscribers to ``topic`` with ``type_name``: where a world message on it goes."""
+        return (sub for sub in self.link.state.subscribers.values()
+                if sub.topic == topic and sub.type == type_name and not sub.closed)
 
 
 @dataclass(slots=True)
@@ -134,28 +115,6 @@ class _Encoded:
     seq: int = -1  # the topic's sequence number it took (-1: a scripted command, which takes none)
 
 
-@dataclass
-class _Speculation:
-    """A world run ahead of a node from the batch's time ``t_ns`` to ``until_ns``, recorded as the node says how far
-    it got (MOMENT), and taken back to where it stopped if that was earlier."""
-
-    node: _Node
-    t_ns: int
-    wake_ns: int | None  # the node's wake-up when the batch went out
-    inert: dict[int, bool]  # the batch's inert publishers (see rosgrade_channel.encode_batch)
-    # The world before some of the advances, by time (see SNAPSHOT_SPACING_NS).
-    snapshots: list[tuple[int, object]] = field(default_factory=list)
-    items: list[_Encoded] = field(default_factory=list)  # what the world published on the way, in time order
-    later: list[tuple[int, int, list[tuple[int, bytes]]]] = field(default_factory=list)  # (t, clock, deliveries)
-    until_ns: int = 0
-    now_ns: int = 0  # the moment the node is at
-    told: bool = False  # the node has named a moment
-    committed: int = 0  # items recorded so far
-    renewed_ns: int | None = None  # when the node last repeated the robot's command
-    acted: bool = False  # the node did something that ended its run on its own (see on_act)
-    settled: bool = False
-
-
 class Session:
     """One run of one scenario with its nodes; `run()` returns what was observed, the recording holds the rest."""
 
@@ -165,7 +124,7 @@ class Session:
         self.log_path = log
         # One wire flavour per run: the client library of its nodes (rospy: ROS 1, rclpy: ROS 2).
         self.wire = wire_for(spec.flavour, spec.interfaces)
-        self._discovery_ns = DISCOVERY_NS if self.wire.name == "ros2" else 0
+        self.discovery_ns = self.wire.discovery_ns
         self.catalog = self.wire.catalog
         # The velocity command types the robot's base takes (the scenario's choice, else the flavour's robot).
         self.command_types = frozenset(self.wire.canonical(t) for t in spec.scenario.command_types) \
@@ -185,11 +144,12 @@ class Session:
         self._recorder: Recorder | None = None
         self.params: ParamServer | None = None  # the run's parameter server, from the start of the recording
         self._next_usage_check = 0.0
-        self._listened: set[str] | None = None  # the topics the world was last told nodes subscribe to
+        self.listened: set[str] | None = None  # the topics the world was last told nodes subscribe to
         # The (type, bytes) of the last command a node's publication gave the robot (None: none, or a scripted one
         # came after it): repeating it changes nothing but the base's timeout.
-        self._robot_command: tuple[str, bytes] | None = None
-        self._ahead: _Speculation | None = None  # the world run ahead of the node now running, until settled
+        self.robot_command: tuple[str, bytes] | None = None
+        self.ahead: Speculation | None = None  # the world run ahead of the node now running, until settled
+        self.lookahead = Lookahead(self)
         self.services: ServiceRouter | None = None  # who serves what, and the calls in flight (grader/runtime/services)
         self.caller: ScenarioCaller | None = None  # the scenario's own service calls
         try:
@@ -348,9 +308,9 @@ class Session:
             self._replay_latched(t)
             subscribed = {sub.topic for node in alive for sub in node.link.state.subscribers.values()
                           if not sub.closed}
-            if subscribed != self._listened:
+            if subscribed != self.listened:
                 # Sensors publish while someone listens: nobody reads an unsubscribed 200 Hz /imu, it only costs.
-                self._listened = subscribed
+                self.listened = subscribed
                 self.world.listen(subscribed)
             pending_now = any(n.deliveries for n in alive)
             if pending_now:
@@ -358,7 +318,7 @@ class Session:
             else:
                 # The world stops the loop only for what some node subscribes to; the rest is recorded on the way.
                 candidates = [c for c in (horizon, self.world.next_output_ns(subscribed)) if c is not None]
-                candidates += self._latched_connect_times(t)
+                candidates += self.latched_connect_times(t)
                 if (call_ns := self.caller.next_ns()) is not None:
                     candidates.append(max(call_ns, t))
                 for node in alive:
@@ -422,196 +382,47 @@ class Session:
             self._run_node(node, link, t, shutdown, first)
 
     def _run_node(self, node: _Node, link: NodeLink, t: int, shutdown: str | None, first: bool) -> None:
-        ahead: _Speculation | None = None
+        ahead: Speculation | None = None
         try:
             if not first:
-                clock = self._clock_ns(link, t)
+                clock = self.clock_ns(link, t)
                 deliveries, node.deliveries = node.deliveries, []
                 changes = self._connection_changes(node, t)
                 params = self.params.take(self.nodes.index(node))
                 if shutdown is None:
-                    ahead = self._speculate(node, t)
+                    ahead = self.lookahead.start(node, t)
                 link.resume(t, clock, deliveries, shutdown, changes, params,
                             later=ahead.later if ahead is not None else (),
                             until_ns=ahead.until_ns if ahead is not None else None,
                             inert=ahead.inert if ahead is not None else None)
-            self._ahead = ahead
+            self.ahead = ahead
             node.wake_ns = link.run_until_wait(
                 t, lambda event: self._node_event(node, event, ahead.now_ns if ahead is not None else t),
                 ahead.inert if ahead is not None else None,
-                lambda moment: self._moment(ahead, moment), lambda: self._settle(ahead, exact=True))
+                lambda moment: self.lookahead.moment(ahead, moment), lambda: self.lookahead.settle(ahead, exact=True))
             if ahead is not None and not ahead.settled:
-                self._settle(ahead, exact=False)
+                self.lookahead.settle(ahead, exact=False)
         except (NodeExited, NodeSilent, NodeOverLimit, ProtocolViolation, OutputLimitExceeded,
                 EndpointLimitExceeded) as exc:
             if ahead is not None and not ahead.settled:
-                self._settle(ahead, exact=True)  # where it ended (or broke the channel): the last moment it named
+                # where it ended (or broke the channel): the last moment it named
+                self.lookahead.settle(ahead, exact=True)
             self._node_failed(node, exc, ahead.now_ns if ahead is not None else t)
         finally:
-            self._ahead = None
+            self.ahead = None
 
-    def _clock_ns(self, link: NodeLink, t: int) -> int:
+    def clock_ns(self, link: NodeLink, t: int) -> int:
         """/clock as the node has it at t: the last 10 ms tick (0 until init_node, as before /clock connects; for
         rclpy, until discovery)."""
         init = link.state.init_ns
-        return (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if init is not None and t >= init + self._discovery_ns \
+        return (t // ch.CLOCK_PERIOD_NS) * ch.CLOCK_PERIOD_NS if init is not None and t >= init + self.discovery_ns \
             else 0
 
-    def _discovered(self, node: _Node, t: int) -> bool:
+    def discovered(self, node: _Node, t: int) -> bool:
         """Whether the node and the others (the world included) know each other at t: rclpy from its DDS discovery
         on, so nothing reaches its subscribers before; rospy always (the master knows it as it registers)."""
         init = node.link.state.init_ns
-        return not self._discovery_ns or (init is not None and t >= init + self._discovery_ns)
-
-    # -- running the world ahead of a node (batches of moments) ------------------------------------------------
-    def _speculate(self, node: _Node, t: int) -> _Speculation | None:
-        """Run the world ahead of a node at t for one BATCH of moments; None when the lockstep must go step by step
-        (several nodes, a shutdown, a world without rollback, a node that acted at once lately).
-
-        The later moments are the times the lockstep would stop at to deliver to the node, up to a horizon: a while
-        past its wake-up (``free_ns``, which the node's record sets), before anything else that would change its
-        batches (a publisher connecting, the shutdown, the end) and, if the node may repeat the robot's command,
-        before that command would time out or a scripted one replace it. What the world publishes on the way is
-        encoded but not yet recorded."""
-        snapshot = getattr(self.world, "snapshot", None)
-        if not MAX_MOMENTS or snapshot is None or node.term_ns is not None or sum(n.alive for n in self.nodes) != 1 \
-                or node.link.state.init_ns is None or t < node.link.state.init_ns + self._discovery_ns:
-            return None  # (before rclpy's discovery: the node would take its own wake-ups' /clock ticks as given)
-        if node.pause:
-            node.pause -= 1
-            return None
-        wake = None if node.wake_ns is None else max(node.wake_ns, t)  # t: it wakes now, by its own deadline
-        holds = self.world.command_holds_until_ns()
-        inert = self._inert_publishers(node, t, holds)
-        bounds = [self.end_ns, *self._latched_connect_times(t)]
-        if (call_ns := self.caller.next_ns()) is not None:  # the scenario's next service call
-            bounds.append(max(call_ns, t + 1))
-        if self.shutdown_ns is not None and not self.shutdown_sent:
-            bounds.append(self.shutdown_ns)
-        bounds += [ready for pub in node.link.state.publishers.values()
-                   if not pub.closed and (ready := self._ready_ns(pub)) > t]
-        if False in inert.values():  # a repeated command must find the base as it left it
-            scripted = self.world.next_scripted_command_ns
-            bounds += [b for b in (None if holds is None else holds + 1, scripted) if b is not None]
-        limit = min(min(bounds) - 1, t + MAX_AHEAD_NS if wake is None else wake + node.free_ns)
-        due = self.world.next_output_ns(self._listened)
-        if (wake is None or wake > limit) and (due is None or due > limit):
-            return None  # nothing for the node before the horizon: running ahead could only be taken back
-        ahead = _Speculation(node, t, wake, inert, now_ns=t)
-        started = time.perf_counter()
-        while len(ahead.later) < node.moments_cap:
-            target = due if due is not None and due <= limit else limit
-            if target <= self.world.time_ns:
-                break
-            if not ahead.snapshots or self.world.time_ns - ahead.snapshots[-1][0] >= SNAPSHOT_SPACING_NS:
-                ahead.snapshots.append((self.world.time_ns, snapshot()))
-            samples = self.world.advance_to(target)
-            stepped = time.perf_counter()
-            timing.add("physics and sensors", stepped - started)
-            encoded = [self._encode(sample) for sample in samples]
-            ahead.items += encoded
-            deliveries = [(sub.ident, item.data) for item in encoded
-                          if item.to_nodes and self._discovered(node, item.t_ns)
-                          for sub in _listening(node, item.topic, item.type)]
-            if deliveries:
-                ahead.later.append((target, self._clock_ns(node.link, target), deliveries))
-            due = self.world.next_output_ns(self._listened)
-            started = time.perf_counter()
-            timing.add("world messages (encode, record, queue)", started - stepped)
-        ahead.until_ns = self.world.time_ns
-        if ahead.until_ns == t or (not ahead.later and (wake is None or wake > ahead.until_ns)):
-            self._take_back(ahead, t)  # nothing the node would do on its own
-            return None
-        return ahead
-
-    def _inert_publishers(self, node: _Node, t: int, holds: int | None) -> dict[int, bool]:
-        """The node's publishers whose messages cannot change the world or its batches while nothing else changes:
-        True for any message (recorded only), False when only its last message again is (the robot's command in
-        force, repeated, while it holds: until ``holds``, the base's command timeout). Latched publishers never are: a
-        latched message is kept for later subscribers."""
-        inert: dict[int, bool] = {}
-        for pub in node.link.state.publishers.values():
-            if pub.closed or pub.latch:
-                continue
-            if self._ignored(pub) or t < self._ready_ns(pub):
-                inert[pub.ident] = True  # ignored, or lost before its publisher connects
-                continue
-            receivers = self._receivers(pub, t)
-            if not receivers:
-                inert[pub.ident] = True
-            elif receivers == [ROBOT] and pub.last_data is not None \
-                    and self._robot_command == (pub.type, pub.last_data) and (holds is None or holds > t):
-                inert[pub.ident] = False
-        return inert
-
-    def _moment(self, ahead: _Speculation, t_ns: int) -> int:
-        """The node says it is at ``t_ns`` (MOMENT): record what the world did up to then; returns the time."""
-        if not ahead.t_ns <= t_ns <= ahead.until_ns:
-            raise ProtocolViolation(f"MOMENT at {t_ns} ns, outside its batch ({ahead.t_ns}..{ahead.until_ns} ns)")
-        if t_ns < ahead.now_ns or (ahead.told and t_ns == ahead.now_ns):
-            raise ProtocolViolation(f"MOMENT at {t_ns} ns, not after the moment before it ({ahead.now_ns} ns)")
-        ahead.now_ns, ahead.told = t_ns, True
-        self._commit_ahead(ahead, t_ns)
-        return t_ns
-
-    def _commit_ahead(self, ahead: _Speculation, t_ns: int) -> None:
-        """Record the world's messages run ahead up to ``t_ns`` (already delivered, if they were for the node)."""
-        items, n = ahead.items, ahead.committed
-        while n < len(items) and items[n].t_ns <= t_ns:
-            self._commit(items[n], queue=False)
-            n += 1
-        ahead.committed = n
-
-    def _settle(self, ahead: _Speculation, exact: bool) -> None:
-        """The node stopped at ``ahead.now_ns``: acted there (or ended), or sent WAIT. Record the world up to that
-        moment and take it back there; after a WAIT with every later moment run and a wake-up past the horizon the
-        world may stay where it ran ahead to, since the lockstep would have gone there with nothing to stop for."""
-        node, t = ahead.node, ahead.now_ns
-        ahead.acted = ahead.acted or exact
-        self._commit_ahead(ahead, t)
-        passed = sum(1 for when, _, _ in ahead.later if when <= t)
-        if not exact and passed == len(ahead.later) and (node.wake_ns is None or node.wake_ns > ahead.until_ns):
-            self._commit_ahead(ahead, ahead.until_ns)
-        else:
-            self._take_back(ahead, t)
-        if ahead.renewed_ns is not None:
-            self.world.repeat_command(ahead.renewed_ns)
-        ahead.settled = True
-        self._ahead = None
-        timing.count("moments run without a round trip", passed)
-        wake = ahead.wake_ns
-        if ahead.acted and t == ahead.t_ns:  # it acted at once: the lockstep is cheaper for a while, then try again
-            node.misses += 1
-            node.moments_cap, node.pause = 1, min(2 ** node.misses, MAX_MOMENTS)
-            node.free_ns = FIRST_FREE_NS
-            return
-        node.misses = 0
-        node.moments_cap = min(node.moments_cap * 2, MAX_MOMENTS) if passed == len(ahead.later) else max(1, passed)
-        if wake is None:
-            return
-        if not ahead.acted:  # past its wake-up (or only up to it) it did nothing that mattered: run further
-            node.free_ns = min(max(2 * node.free_ns, FIRST_FREE_NS), MAX_FREE_NS)
-        else:  # a P controller's changing commands, say: run ahead no further than it got this time
-            node.free_ns = max(0, t - wake)
-
-    def _take_back(self, ahead: _Speculation, t_ns: int) -> None:
-        """Put the world back where it was at ``t_ns`` (MuJoCo's state and the world's own, then the same advance
-        again: bit for bit what the lockstep would have) and forget what it published after then."""
-        if self.world.time_ns == t_ns:
-            return
-        started = time.perf_counter()
-        at, snapshot = next((at, snapshot) for at, snapshot in reversed(ahead.snapshots) if at <= t_ns)
-        timing.count("simulated milliseconds run ahead in vain", (self.world.time_ns - at) / 1e6)
-        self.world.restore(snapshot)
-        if t_ns > at:
-            self.world.advance_to(t_ns)
-        dropped = ahead.items[ahead.committed:]
-        del ahead.items[ahead.committed:]
-        for item in dropped:
-            if item.seq >= 0:
-                self.seq[item.topic] = min(self.seq[item.topic], item.seq)
-        timing.add("world run ahead and taken back", time.perf_counter() - started)
-        timing.count("world advances taken back")
+        return not self.discovery_ns or (init is not None and t >= init + self.discovery_ns)
 
     # -- what nodes do -----------------------------------------------------------------------------------------
     def _node_event(self, node: _Node, event: object, t: int) -> ServiceReply | None:
@@ -654,10 +465,8 @@ class Session:
         self.params.start()
 
     def _start_params(self, node_spec: NodeSpec) -> dict:
-        """START's parameters: the server's tree for rospy; an rclpy node takes only its task's overrides."""
-        if self.wire.name == "ros2":
-            return {"/use_sim_time": self.world.sim_clock, **node_spec.params}
-        return {"/" + name: value for name, value in self.params.tree.items()}
+        """START's parameters (see Wire.start_params)."""
+        return self.wire.start_params(self.params.tree, self.world.sim_clock, node_spec.params)
 
     def _record_param(self, text: str, author: int | str) -> None:
         """One entry of /rosgrade/param, under whoever made the change (a node index, the world or the grader)."""
@@ -678,7 +487,7 @@ class Session:
 
     # -- connections (as a ROS 1 master and TCPROS would make them) -------------------------------------------
     @staticmethod
-    def _ready_ns(publisher: Endpoint) -> int:
+    def ready_ns(publisher: Endpoint) -> int:
         """When a node's publisher has connected to the subscribers that existed when it registered (at the earliest
         CONNECT_DELAY_NS after, until _decide_connections has decided)."""
         return publisher.ready_ns if publisher.ready_ns is not None else publisher.registered_ns + CONNECT_DELAY_NS
@@ -693,22 +502,22 @@ class Session:
                 if pub.ready_ns is not None or pub.closed:
                     continue
                 due = pub.registered_ns + CONNECT_DELAY_NS
-                if self._discovery_ns:
+                if self.discovery_ns:
                     if init is not None:
-                        pub.ready_ns = max(due, init + self._discovery_ns)
+                        pub.ready_ns = max(due, init + self.discovery_ns)
                 elif t >= due:
                     pub.ready_ns = pub.registered_ns + BUSY_CONNECT_DELAY_NS if node.link.state.busy else due
 
-    def _receivers(self, publisher: Endpoint, t: int) -> list:
+    def receivers(self, publisher: Endpoint, t: int) -> list:
         """Who a node's publisher is connected to at t: the robot's base (ROBOT) and (node index, subscriber handle)
         pairs; a subscriber that registers after the publisher connected is connected at once."""
-        if t < self._ready_ns(publisher):
+        if t < self.ready_ns(publisher):
             return []
         found: list = []
         if publisher.topic in self.world.command_topics and publisher.type in self.command_types:
             found.append(ROBOT)
         for index, other in enumerate(self.nodes):
-            if other.alive and self._discovered(other, t):
+            if other.alive and self.discovered(other, t):
                 found += [(index, sub.ident) for sub in other.link.state.subscribers.values()
                           if sub.topic == publisher.topic and sub.type == publisher.type and not sub.closed
                           and t >= sub.registered_ns]
@@ -716,12 +525,12 @@ class Session:
 
     def _publishers_of(self, node: _Node, subscriber: Endpoint, t: int) -> set:
         """The peers (the world, or node indexes) whose publishers a node's subscriber is connected to at t."""
-        if not self._discovered(node, t):
+        if not self.discovered(node, t):
             return set()
         peers: set = {ROBOT} if (subscriber.topic, subscriber.type) in self.world_topics else set()
         for index, other in enumerate(self.nodes):
             if other.alive and any(pub.topic == subscriber.topic and pub.type == subscriber.type and not pub.closed
-                                   and t >= max(self._ready_ns(pub), subscriber.registered_ns)
+                                   and t >= max(self.ready_ns(pub), subscriber.registered_ns)
                                    for pub in other.link.state.publishers.values()):
                 peers.add(index)
         return peers
@@ -732,7 +541,7 @@ class Session:
         counts = {}
         for pub in node.link.state.publishers.values():
             if not pub.closed:
-                counts[pub.ident] = len({key if key == ROBOT else key[0] for key in self._receivers(pub, t)})
+                counts[pub.ident] = len({key if key == ROBOT else key[0] for key in self.receivers(pub, t)})
         for sub in node.link.state.subscribers.values():
             if not sub.closed:
                 counts[sub.ident] = len(self._publishers_of(node, sub, t))
@@ -742,19 +551,19 @@ class Session:
 
     def _route(self, node: _Node, publisher: Endpoint, data: bytes, t: int) -> None:
         """Hand a node's publication to everything connected to its publisher at t."""
-        for key in self._receivers(publisher, t):
+        for key in self.receivers(publisher, t):
             self._hand_over(key, node, publisher, data, t)
             if publisher.latched is not None:
                 publisher.latched.receivers.add(key)
 
     def _hand_over(self, key, node: _Node, publisher: Endpoint, data: bytes, t: int) -> None:
         if key == ROBOT:
-            if self._ahead is not None:  # the command in force, repeated (see _inert_publishers)
-                self._ahead.renewed_ns = t
+            if self.ahead is not None:  # the command in force, repeated (see Lookahead._inert)
+                self.ahead.renewed_ns = t
             else:
                 linear, angular = self.wire.decode_command(publisher.type, data)
                 self.world.command(publisher.topic, linear=linear, angular=angular)
-            self._robot_command = (publisher.type, data)
+            self.robot_command = (publisher.type, data)
             self.received[publisher.topic] = self.received.get(publisher.topic, 0) + 1
         else:
             index, ident = key
@@ -769,25 +578,25 @@ class Session:
                 continue
             for pub in node.link.state.publishers.values():
                 held = pub.latched
-                if held is None or pub.closed or t < self._ready_ns(pub):
+                if held is None or pub.closed or t < self.ready_ns(pub):
                     continue
                 if not held.sent:
                     held.sent = True
                     self._recorder.write(pub.topic, pub.type, held.data, t, callerid=node.callerid, latching=True,
                                          origin="node")
-                for key in self._receivers(pub, t):
+                for key in self.receivers(pub, t):
                     if key not in held.receivers:
                         held.receivers.add(key)
                         self._hand_over(key, node, pub, held.data, t)
 
-    def _latched_connect_times(self, t: int) -> list[int]:
+    def latched_connect_times(self, t: int) -> list[int]:
         """Future times at which a held latched message goes out (its publisher connects)."""
-        return [self._ready_ns(pub) for node in self.nodes if node.alive
+        return [self.ready_ns(pub) for node in self.nodes if node.alive
                 for pub in node.link.state.publishers.values()
-                if pub.latched is not None and not pub.closed and self._ready_ns(pub) > t]
+                if pub.latched is not None and not pub.closed and self.ready_ns(pub) > t]
 
     def _publication(self, node: _Node, endpoint: Endpoint, data: bytes, t: int) -> None:
-        if self._ignored(endpoint):
+        if self.ignored(endpoint):
             # only the world and the grader speak here
             note = (f"{node.outcome.script} published on {endpoint.topic}, which only the simulated robot and the "
                     "grader publish; those messages were ignored.")
@@ -796,7 +605,7 @@ class Session:
             self._recorder.write(IGNORED_PREFIX + endpoint.topic, endpoint.type, data, t, callerid=node.callerid,
                                  origin="node")
             return
-        connected = t >= self._ready_ns(endpoint)
+        connected = t >= self.ready_ns(endpoint)
         if endpoint.latch:
             held = endpoint.latched
             if held is not None and not held.sent:  # replaced before it could go out: that one is lost
@@ -811,7 +620,7 @@ class Session:
                              origin="node")
         self._route(node, endpoint, data, t)
 
-    def _ignored(self, publisher: Endpoint) -> bool:
+    def ignored(self, publisher: Endpoint) -> bool:
         """Whether a node's publisher is on a topic only the world or the grader publish (its messages are ignored)."""
         topic = publisher.topic
         world_only = topic in self.publications and not self.publications[topic].shared
@@ -846,9 +655,9 @@ class Session:
 
     def _world_sample(self, sample: object) -> None:
         """Record one thing the world did; deliver it to subscribers when its topic is declared for nodes."""
-        self._commit(self._encode(sample), queue=True)
+        self.commit(self.encode(sample), queue=True)
 
-    def _encode(self, sample: object) -> _Encoded:
+    def encode(self, sample: object) -> _Encoded:
         """A world sample as the message recorded (a scripted driver's command is recorded as the grader's)."""
         if isinstance(sample, CommandSample):
             return _Encoded(sample.topic, self.wire.twist_type, self.wire.twist(sample.linear, sample.angular),
@@ -858,12 +667,12 @@ class Session:
         return _Encoded(sample.topic, publication.type, self.wire.encode(sample, seq), sample.t_ns,
                         self.world.node_name, "world", publication.to_nodes, seq)
 
-    def _commit(self, item: _Encoded, queue: bool) -> None:
+    def commit(self, item: _Encoded, queue: bool) -> None:
         """Record a world message and count it for its subscribers, queueing it for their next batch if ``queue``
         (a later moment's deliveries went out in the batch already)."""
         self._recorder.write(item.topic, item.type, item.data, item.t_ns, callerid=item.callerid, origin=item.origin)
         if item.seq < 0:  # a scripted command: the base now has another command than any node's
-            self._robot_command = None
+            self.robot_command = None
         if item.to_nodes:
             self._deliver(item.topic, item.type, item.data, item.t_ns, queue)
 
@@ -872,9 +681,9 @@ class Session:
         world (next batch)."""
         self.world_topics.add((topic, type_name))
         for node in self.nodes:
-            if not node.alive or not self._discovered(node, t):
+            if not node.alive or not self.discovered(node, t):
                 continue
-            for sub in _listening(node, topic, type_name):
+            for sub in node.listening(topic, type_name):
                 if queue:
                     node.deliveries.append((sub.ident, data))
                 sub.count += 1
@@ -890,7 +699,7 @@ class Session:
             "odometry_topic": self.world.odometry_topic,
             "command_topics": json.dumps(list(self.world.command_topics)),
             "command_types": json.dumps(sorted(self.command_types)),
-            "client_library": "rclpy" if self.wire.name == "ros2" else "rospy",
+            "client_library": self.wire.client_library,
             "scenario_name": self.spec.name,
             "scenario": scenario.model_dump_json(),
         }
@@ -909,12 +718,6 @@ class Session:
             "diagnostics": json.dumps(result.diagnostics),
             "topics": json.dumps(result.topics),
         }
-
-
-def _listening(node: _Node, topic: str, type_name: str) -> Iterator[Endpoint]:
-    """The node's open subscribers to ``topic`` with ``type_name``: where a world message on it goes."""
-    return (sub for sub in node.link.state.subscribers.values()
-            if sub.topic == topic and sub.type == type_name and not sub.closed)
 
 
 def _tail(path: Path, limit: int = 600) -> str:

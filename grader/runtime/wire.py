@@ -25,6 +25,12 @@ TWIST2 = "geometry_msgs/msg/Twist"
 TWIST_STAMPED2 = "geometry_msgs/msg/TwistStamped"
 
 
+# ROS 2: a node's DDS participant (made with its first node) discovers the world's and is discovered this long
+# after: its endpoints made before match then, and /clock and the world's topics reach it from then on. Real rclpy
+# (Fast DDS) is bimodal, 0.001-0.45 s or about 3 s (a missed announcement); this is the fast mode. DEVELOPERS.md.
+DISCOVERY_NS = 100_000_000
+
+
 class WireError(Exception):
     """A world produced a sample this flavour cannot encode, or a flavour name is unknown."""
 
@@ -34,6 +40,10 @@ class Wire:
     """What one client library's runs put on the wire and in the recording."""
 
     name: str  # "ros1" | "ros2"
+    client_library: str  # as students know it: "rospy" | "rclpy"
+    discovery_ns: int  # how long after its start a node and the world know each other (0: at once)
+    # rospy nodes read the run's parameter server; an rclpy node holds its own parameters, given its overrides only.
+    shared_parameters: bool
     catalog: MessageCatalog | Ros2Catalog
     encoders: Mapping[type, Callable[[object, int], bytes]]
     log_type: str
@@ -48,6 +58,12 @@ class Wire:
     def service_part(self, srv_type: str, part: str) -> str:
         """The message type of a service's "Request" or "Response"."""
         return self.catalog.service_part(srv_type, part)
+
+    def start_params(self, tree: Mapping[str, object], sim_clock: bool, overrides: Mapping[str, object]) -> dict:
+        """The parameters a node's START carries: the server's whole tree (rospy) or its own overrides (rclpy)."""
+        if self.shared_parameters:
+            return {"/" + name: value for name, value in tree.items()}
+        return {"/use_sim_time": sim_clock, **overrides}
 
     def canonical(self, type_name: str) -> str:
         """A type name in this flavour's spelling (``pkg/Name`` or ``pkg/msg/Name``)."""
@@ -100,7 +116,7 @@ class Wire:
 
 def _ros1_wire() -> Wire:
     return Wire(
-        name="ros1", catalog=default_catalog(),
+        name="ros1", client_library="rospy", discovery_ns=0, shared_parameters=True, catalog=default_catalog(),
         encoders={OdometrySample: ros1.odometry_bytes, TransformSample: ros1.tf_bytes,
                   GroundTruthSample: ros1.ground_truth_bytes, ImuSample: ros1.imu_bytes,
                   JointStateSample: ros1.joint_state_bytes, ScanSample: ros1.laser_scan_bytes,
@@ -114,7 +130,8 @@ def _ros1_wire() -> Wire:
 
 def _ros2_wire() -> Wire:
     return Wire(
-        name="ros2", catalog=ros2_catalog(),
+        name="ros2", client_library="rclpy", discovery_ns=DISCOVERY_NS, shared_parameters=False,
+        catalog=ros2_catalog(),
         encoders={OdometrySample: cdr.odometry_cdr, TransformSample: cdr.tf_cdr,
                   GroundTruthSample: cdr.ground_truth_cdr, ImuSample: cdr.imu_cdr,
                   JointStateSample: cdr.joint_state_cdr, ScanSample: cdr.laser_scan_cdr,

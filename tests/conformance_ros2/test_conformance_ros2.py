@@ -184,7 +184,7 @@ def test_reference_behaviour(case: Case, side: str, request: pytest.FixtureReque
 
 def test_p20_startup_ours(our_outputs: _OursCache) -> None:
     """rclpy.init returns 0.35 s after the process started and discovery takes 0.1 s more (rclpy.context.STARTUP_NS,
-    session.DISCOVERY_NS): the first /clock, and so the first tick, comes 0.45 s after the start, and its message
+    wire.DISCOVERY_NS): the first /clock, and so the first tick, comes 0.45 s after the start, and its message
     reaches the robot then."""
     from rosgrade_side2 import START_TIME_S
 

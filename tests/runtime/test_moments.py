@@ -11,7 +11,7 @@ import pytest
 
 from grader import timing
 from grader.runtime import NodeSpec, RunSpec
-from grader.runtime import session
+from grader.runtime import lookahead
 from grader.runtime.session import run
 from sim import Pose2D, Scenario
 from sim.scenario import ScriptedCommand
@@ -100,7 +100,7 @@ except KeyboardInterrupt:
 
 def _run(tmp: Path, script: Path, scenario: Scenario, name: str, moments: int, monkeypatch,
          flavour: str) -> tuple[str, dict]:
-    monkeypatch.setattr(session, "MAX_MOMENTS", moments)
+    monkeypatch.setattr(lookahead, "MAX_MOMENTS", moments)
     spec = RunSpec(scenario=scenario, nodes=(NodeSpec(script=script, flavour=flavour),))
     with timing.collect() as counts:
         result = run(spec, tmp / f"{name}.mcap", tmp / f"{name}.log")
@@ -109,7 +109,7 @@ def _run(tmp: Path, script: Path, scenario: Scenario, name: str, moments: int, m
 
 
 def _both(tmp: Path, script: Path, scenario: Scenario, monkeypatch, flavour: str = "ros1") -> tuple[dict, dict]:
-    ahead, batched = _run(tmp, script, scenario, "ahead", session.MAX_MOMENTS, monkeypatch, flavour)
+    ahead, batched = _run(tmp, script, scenario, "ahead", lookahead.MAX_MOMENTS, monkeypatch, flavour)
     lockstep, stepped = _run(tmp, script, scenario, "lockstep", 0, monkeypatch, flavour)
     assert ahead == lockstep, "the recording with batches of moments differs from the plain lockstep's"
     assert stepped.get("# moments run without a round trip", 0) == 0

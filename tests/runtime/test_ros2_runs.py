@@ -103,7 +103,7 @@ print("first heard", heard[0], "clock", node.get_clock().now().nanoseconds)
 
 
 def test_a_ros2_node_hears_another_from_its_own_discovery_on(tmp_path: Path) -> None:
-    """Start-up (rclpy.context.STARTUP_NS, session.DISCOVERY_NS): the talker's rclpy.init returns 0.35 s after the
+    """Start-up (rclpy.context.STARTUP_NS, wire.DISCOVERY_NS): the talker's rclpy.init returns 0.35 s after the
     start and it publishes from its discovery 0.1 s later; the listener's first node comes at 1 s, and it hears the
     talker only from its own discovery, 0.1 s after that, when its /clock starts too."""
     for name, text in (("talker", TALKER), ("listener", LISTENER)):

@@ -10,7 +10,7 @@ import pytest
 
 from grader import timing
 from grader.recording import Recording
-from grader.runtime import NodeSpec, RunSpec, session
+from grader.runtime import NodeSpec, RunSpec, lookahead
 from grader.runtime.scenario_calls import SET_PARAMETERS, planned_calls
 from grader.runtime.session import run
 from grader.runtime.wire import wire_for
@@ -156,8 +156,8 @@ def test_a_run_with_sets_records_as_the_plain_lockstep(tmp_path, monkeypatch, fl
                         param_sets=[{"t": 2.0, "node": "/param_circle", "name": "radius", "value": 1.2},
                                     {"t": 4.0, "node": "/param_circle", "name": "radius", "value": 0.8}])
     digests, ahead = [], []
-    for moments in (session.MAX_MOMENTS, 0):
-        monkeypatch.setattr(session, "MAX_MOMENTS", moments)
+    for moments in (lookahead.MAX_MOMENTS, 0):
+        monkeypatch.setattr(lookahead, "MAX_MOMENTS", moments)
         path = tmp_path / f"{moments}.mcap"
         with timing.collect() as counts:
             run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=script, flavour=flavour),)), path,
