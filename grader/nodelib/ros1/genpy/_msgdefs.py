@@ -15,6 +15,26 @@ _MULTI_ARRAYS = {"Byte": "byte", "Float32": "float32", "Float64": "float64", "In
                  "Int32": "int32", "Int64": "int64", "UInt8": "uint8", "UInt16": "uint16", "UInt32": "uint32",
                  "UInt64": "uint64"}
 _XYZ = "float64 x\nfloat64 y\nfloat64 z"
+TEST_REQUEST_GOAL = ("int32 TERMINATE_SUCCESS=0\nint32 TERMINATE_ABORTED=1\nint32 TERMINATE_REJECTED=2\n"
+                     "int32 TERMINATE_LOSE=3\nint32 TERMINATE_DROP=4\nint32 TERMINATE_EXCEPTION=5\n"
+                     "int32 terminate_status\nbool ignore_cancel\nstring result_text\nint32 the_result\n"
+                     "bool is_simple_client\nduration delay_accept\nduration delay_terminate\n"
+                     "duration pause_status")
+
+
+def action_messages(package: str, name: str, goal: str, result: str, feedback: str) -> dict[str, str]:
+    """The seven messages genmsg generates from one .action: its three parts and the wrappers actionlib sends."""
+    return {
+        f"{package}/{name}Goal": goal,
+        f"{package}/{name}Result": result,
+        f"{package}/{name}Feedback": feedback,
+        f"{package}/{name}ActionGoal": f"Header header\nactionlib_msgs/GoalID goal_id\n{name}Goal goal",
+        f"{package}/{name}ActionResult": f"Header header\nactionlib_msgs/GoalStatus status\n{name}Result result",
+        f"{package}/{name}ActionFeedback": f"Header header\nactionlib_msgs/GoalStatus status\n"
+                                           f"{name}Feedback feedback",
+        f"{package}/{name}Action": f"{name}ActionGoal action_goal\n{name}ActionResult action_result\n"
+                                   f"{name}ActionFeedback action_feedback",
+    }
 
 MESSAGES: dict[str, str] = {
     **{"std_msgs/" + name: "%s data" % type_ for name, type_ in _STD_SCALARS.items()},
@@ -97,6 +117,17 @@ MESSAGES: dict[str, str] = {
     "rosgraph_msgs/Log": "byte DEBUG=1\nbyte INFO=2\nbyte WARN=4\nbyte ERROR=8\nbyte FATAL=16\nHeader header\n"
                          "byte level\nstring name\nstring msg\nstring file\nstring function\nuint32 line\n"
                          "string[] topics",
+
+    "actionlib_msgs/GoalID": "time stamp\nstring id",
+    "actionlib_msgs/GoalStatus": "GoalID goal_id\nuint8 status\nuint8 PENDING=0\nuint8 ACTIVE=1\nuint8 PREEMPTED=2\n"
+                                 "uint8 SUCCEEDED=3\nuint8 ABORTED=4\nuint8 REJECTED=5\nuint8 PREEMPTING=6\n"
+                                 "uint8 RECALLING=7\nuint8 RECALLED=8\nuint8 LOST=9\nstring text",
+    "actionlib_msgs/GoalStatusArray": "Header header\nGoalStatus[] status_list",
+    # actionlib's own test actions (Debian's python3-actionlib ships their classes as actionlib.msg)
+    **action_messages("actionlib", "TwoInts", "int64 a\nint64 b", "int64 sum", ""),
+    **action_messages("actionlib", "Test", "int32 goal", "int32 result", "int32 feedback"),
+    **action_messages("actionlib", "TestRequest", TEST_REQUEST_GOAL, "int32 the_result\nbool is_simple_server",
+                      ""),
 
     "turtlesim/Color": "uint8 r\nuint8 g\nuint8 b",
     "turtlesim/Pose": "float32 x\nfloat32 y\nfloat32 theta\nfloat32 linear_velocity\nfloat32 angular_velocity",
