@@ -1,0 +1,199 @@
+"""The substitutions of ROS 2 launch (LaunchConfiguration, PathJoinSubstitution, PythonExpression, ...)."""
+from __future__ import annotations
+
+import importlib
+import os
+from typing import Any
+
+from launch.core import (
+    LaunchContext, Substitution, SubstitutionFailure, TextSubstitution, normalize_to_list_of_substitutions,
+    perform_substitutions,
+)
+
+__all__ = ["AndSubstitution", "AnonName", "Command", "EnvironmentVariable", "EqualsSubstitution", "FindExecutable",
+           "LaunchConfiguration", "LocalSubstitution", "NotSubstitution", "OrSubstitution", "PathJoinSubstitution",
+           "PythonExpression", "Substitution", "SubstitutionFailure", "TextSubstitution", "ThisLaunchFile",
+           "ThisLaunchFileDir"]
+
+
+class LaunchConfiguration(Substitution):
+    """The value of a launch configuration (an argument, or one set by SetLaunchConfiguration/let)."""
+
+    def __init__(self, variable_name: Any, *, default: Any = None) -> None:
+        self.variable_name = normalize_to_list_of_substitutions(variable_name)
+        if default is None:
+            self.default = None
+        else:
+            items = [default] if isinstance(default, (str, Substitution)) else list(default)
+            self.default = normalize_to_list_of_substitutions(
+                [i if isinstance(i, (str, Substitution)) else str(i) for i in items])
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform_substitutions(context, self.variable_name)
+        if name not in context.launch_configurations:
+            if self.default is None:
+                raise SubstitutionFailure(f"launch configuration '{name}' does not exist")
+            return perform_substitutions(context, self.default)
+        return context.launch_configurations[name]
+
+    def describe(self) -> str:
+        return "LaunchConfig('" + " + ".join(s.describe() for s in self.variable_name) + "')"
+
+
+class PathJoinSubstitution(Substitution):
+    """Its parts joined with the path separator."""
+
+    def __init__(self, substitutions: Any) -> None:
+        self.substitutions = [normalize_to_list_of_substitutions(item) for item in substitutions]
+
+    def perform(self, context: LaunchContext) -> str:
+        return os.path.join(*[perform_substitutions(context, item) for item in self.substitutions])
+
+
+class PythonExpression(Substitution):
+    """A Python expression, evaluated with the math module's names (as real launch allows)."""
+
+    def __init__(self, expression: Any, python_modules: Any = ("math",)) -> None:
+        self.expression = normalize_to_list_of_substitutions(expression)
+        self.python_modules = normalize_to_list_of_substitutions(python_modules)
+
+    def perform(self, context: LaunchContext) -> str:
+        names = [context.perform_substitution(sub) for sub in self.python_modules]
+        scope: dict[str, Any] = {}
+        for name in names:
+            module = importlib.import_module(name)
+            if module.__name__ == "math":
+                scope.update(vars(module))
+            scope[module.__name__] = module
+        return str(eval(perform_substitutions(context, self.expression), {}, scope))
+
+
+class EnvironmentVariable(Substitution):
+    """An environment variable of the launch (default_value when unset; without one, an error)."""
+
+    def __init__(self, name: Any, *, default_value: Any = None) -> None:
+        self.name = normalize_to_list_of_substitutions(name)
+        self.default_value = None if default_value is None else normalize_to_list_of_substitutions(default_value)
+
+    def perform(self, context: LaunchContext) -> str:
+        default = None if self.default_value is None else perform_substitutions(context, self.default_value)
+        name = perform_substitutions(context, self.name)
+        value = context.environment.get(name, default)
+        if value is None:
+            raise SubstitutionFailure(f"environment variable '{name}' does not exist")
+        return value
+
+
+class LocalSubstitution(Substitution):
+    """A value of the context's locals, by a Python expression on them."""
+
+    def __init__(self, expression: str, description: str | None = None) -> None:
+        self.expression = expression
+
+    def perform(self, context: LaunchContext) -> str:
+        try:
+            return str(eval(self.expression, {}, context.get_locals_as_dict()))
+        except Exception as exc:
+            raise SubstitutionFailure(f"Local substitution '{self.expression}' failed: {exc}") from None
+
+
+class ThisLaunchFileDir(Substitution):
+    """The folder of the launch file being read."""
+
+    def perform(self, context: LaunchContext) -> str:
+        value = context.locals.get("current_launch_file_directory")
+        if value is None:
+            raise SubstitutionFailure("ThisLaunchFileDir used outside of a launch file (in a script)")
+        return value
+
+
+class ThisLaunchFile(Substitution):
+    """The launch file being read."""
+
+    def perform(self, context: LaunchContext) -> str:
+        value = context.locals.get("current_launch_file_path")
+        if value is None:
+            raise SubstitutionFailure("ThisLaunchFile used outside of a launch file (in a script)")
+        return value
+
+
+def _boolean(context: LaunchContext, subs: list[Substitution]) -> bool:
+    from launch.conditions import evaluate_condition_expression
+    try:
+        return evaluate_condition_expression(context, subs)
+    except ValueError as exc:
+        raise SubstitutionFailure(exc) from None
+
+
+class NotSubstitution(Substitution):
+    """'true' when its value is false."""
+
+    def __init__(self, value: Any) -> None:
+        self.value = normalize_to_list_of_substitutions(value)
+
+    def perform(self, context: LaunchContext) -> str:
+        return str(not _boolean(context, self.value)).lower()
+
+
+class AndSubstitution(Substitution):
+    """'true' when both values are true."""
+
+    def __init__(self, left: Any, right: Any) -> None:
+        self.left, self.right = normalize_to_list_of_substitutions(left), normalize_to_list_of_substitutions(right)
+
+    def perform(self, context: LaunchContext) -> str:
+        return str(_boolean(context, self.left) and _boolean(context, self.right)).lower()
+
+
+class OrSubstitution(AndSubstitution):
+    """'true' when either value is true."""
+
+    def perform(self, context: LaunchContext) -> str:
+        return str(_boolean(context, self.left) or _boolean(context, self.right)).lower()
+
+
+class EqualsSubstitution(Substitution):
+    """'true' when both sides are the same text."""
+
+    def __init__(self, left: Any, right: Any) -> None:
+        self.left, self.right = normalize_to_list_of_substitutions(left), normalize_to_list_of_substitutions(right)
+
+    def perform(self, context: LaunchContext) -> str:
+        return str(perform_substitutions(context, self.left) == perform_substitutions(context, self.right)).lower()
+
+
+class AnonName(Substitution):
+    """A name made unique per launch (deterministic here: the name and a counter)."""
+
+    def __init__(self, name: Any) -> None:
+        self.name = normalize_to_list_of_substitutions(name)
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform_substitutions(context, self.name)
+        names = context.locals.setdefault("anon", {})
+        return names.setdefault(name, f"{name}_{len(names) + 1}")
+
+
+class _NotRun(Substitution):
+    """A substitution that would run a program on the grading machine: refused with what to do instead."""
+
+    what = ""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        self.args = args
+
+    def perform(self, context: LaunchContext) -> str:
+        raise SubstitutionFailure(f"{type(self).__name__} {self.what}")
+
+
+class Command(_NotRun):
+    """Command output: rosgrade does not run programs while reading a launch file."""
+
+    what = ("runs a program while the launch file is read (xacro, cat); rosgrade does not run programs then: pass the "
+            "file's path or its content read in Python instead")
+
+
+class FindExecutable(_NotRun):
+    """The path of a program on PATH: none is found while rosgrade reads a launch file."""
+
+    what = "looks for a program on the machine's PATH, which rosgrade does not show to a launch file"
