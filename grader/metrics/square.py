@@ -18,6 +18,7 @@ class SquareAnalysis:
     """The segmented path: vertex points (start first), sides (m), corners (signed deg), closures (m), pauses (s)."""
 
     points: list[tuple[float, float]]
+    times: list[float]  # when the robot was at each vertex (s, the recording's clock)
     sides: list[float]
     corners_deg: list[float]
     closures: list[float]
@@ -82,6 +83,7 @@ def analyse_square(
     while turns and math.dist(start, _middle(traj, turns[0])) < min_side:
         turns.pop(0)
     points = [start, *(_middle(traj, turn) for turn in turns)]
+    times = [float(traj.t[0]), *(float(traj.t[(turn[0] + turn[1]) // 2]) for turn in turns)]
     rest_from = rest_since(traj, rest_speed, rest_turn_rate)
     end_point = (float(traj.x[-1]), float(traj.y[-1]))
     sides = [math.dist(a, b) for a, b in zip(points, points[1:])]
@@ -90,6 +92,7 @@ def analyse_square(
     typical = float(np.median(sides)) if sides else last_stretch
     if rest_from is not None and last_stretch > max(0.3 * typical, 0.05):
         points.append(end_point)
+        times.append(rest_from)
         sides.append(last_stretch)
     closures = [math.dist(points[0], points[k]) for k in range(4, len(points), 4)]
     still = ~moving(traj, rest_speed, rest_turn_rate)
@@ -98,7 +101,7 @@ def analyse_square(
         if j < len(still) and i > 0 and traj.t[j] - traj.t[i] >= min_pause_s  # not the rest before or after
     ]
     return SquareAnalysis(
-        points=points, sides=sides, corners_deg=[math.degrees(t[2]) for t in turns], closures=closures,
+        points=points, times=times, sides=sides, corners_deg=[math.degrees(t[2]) for t in turns], closures=closures,
         pauses=pauses, heading_turns=abs(exact.total(w * np.diff(traj.t))) / (2.0 * math.pi),
         rest_s=None if rest_from is None else float(traj.t[-1] - rest_from),
     )
@@ -165,6 +168,8 @@ def measure(run: RunData, params: Params) -> Measurement:
         "shape_error": max(side_err / ref_side, corner_err / params.corner_deg) if len(sides) >= 4 else math.nan,
         "side_first": float(sides[0]) if len(sides) else math.nan,
         "side_first_ratio": float(sides[0]) / others if len(sides) > 1 and others > 0 else math.nan,
+        # The report's moment: where the square ended, its last vertex (the report shows the whole square there).
+        "decided_at_s": sq.times[-1] - run.start_time,
     }
 
 
@@ -176,7 +181,7 @@ METRIC = Metric(
         "corner_share", "side_mean", "side_min", "side_max", "side_worst_error", "corner_mean_deg",
         "corner_min_deg", "corner_max_deg", "corner_worst_error_deg", "closure_worst", "closure_first", "loops",
         "heading_loops", "loops_at_rest", "final_rest_s", "moving_at_end", "pauses", "shape_error", "side_error_rel",
-        "corner_error_rel", "side_first", "side_first_ratio",
+        "corner_error_rel", "side_first", "side_first_ratio", "decided_at_s",
     }),
     measure=measure,
 )

@@ -78,3 +78,17 @@ def test_timed_square_shape_is_relative_to_the_mean_side() -> None:
 def test_interrupted_run_ignores_the_partial_side() -> None:
     m = measure(run(square_segments(loops=1) + [(2.0, 0.2, 0.0)], shutdown_at=34.0), Params(side=1.0))
     assert m["n_sides"] == 4 and math.isnan(m["loops_at_rest"])
+
+
+def test_the_square_is_decided_where_its_last_corner_was_turned() -> None:
+    """The report's moment: the middle of the eighth turn, in seconds after the run's start (t0 = 12.3 s)."""
+    segs = square_segments(loops=2)
+    m = measure(run(segs + REST, t0=12.3), Params(side=1.0))
+    last_turn_middle = sum(d for d, _, _ in segs) - segs[-1][0] / 2
+    assert m["decided_at_s"] == pytest.approx(last_turn_middle, abs=0.05)
+
+
+def test_a_square_ending_on_a_side_is_decided_where_the_robot_came_to_rest() -> None:
+    segs = square_segments(loops=1)[:-1]  # no turn after the fourth side
+    m = measure(run(segs + REST), Params(side=1.0))
+    assert m["n_sides"] == 4 and m["decided_at_s"] == pytest.approx(sum(d for d, _, _ in segs), abs=0.05)
