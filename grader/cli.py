@@ -521,10 +521,45 @@ def _launch_target(args: argparse.Namespace) -> tuple[Path, dict[str, Path], dic
     return found[0], packages, values
 
 
+def _ros2_launch(args: argparse.Namespace) -> int:
+    """`rosgrade launch` on a ROS 2 launch file: `PATH args...` or `PKG FILE args...` (installed files only)."""
+    from grader.launch import ros2_cli
+    from grader.launch.ros2_eval import Ros2LaunchError
+
+    words = list(args.args)
+    try:
+        if not args.file.is_file() and words and ":=" not in words[0]:
+            file = ros2_cli.find_installed(args.workspace or Path.cwd(), str(args.file), words.pop(0))
+        else:
+            file = args.file
+        values: dict[str, str] = {}
+        for item in words:
+            name, sep, value = item.partition(":=")
+            if not sep or not name:
+                raise CliError(f"{item!r} is not a launch argument; pass them as name:=value")
+            values[name] = value
+        mode = "json" if args.json else "show-args" if args.show_args else "nodes"
+        text, notes = ros2_cli.run(file, args.workspace, values, mode)
+    except Ros2LaunchError as exc:
+        raise CliError(str(exc)) from None
+    for note in notes:
+        print(f"rosgrade: note: {note}", file=sys.stderr)
+    sys.stdout.write(text)
+    return EXIT_OK
+
+
 def cmd_launch(args: argparse.Namespace) -> int:
     """Print what a launch file sets and starts, exactly as `roslaunch --dump-params` / `--nodes` print it."""
     from grader.launch import LaunchError, dump_params, node_names, read_launch
+    from grader.launch import ros2_cli
 
+    if ros2_cli.is_ros2_file(str(args.args[0] if args.args and ":=" not in args.args[0] else args.file)):
+        return _ros2_launch(args)
+    if args.json or args.show_args:
+        raise CliError("--json and --show-args are for ROS 2 launch files (.launch.py); for roslaunch XML use "
+                       "--nodes or --dump-params")
+    if not (args.nodes or args.dump_params):
+        raise CliError("say what to print: --nodes or --dump-params")
     file, packages, values = _launch_target(args)
     try:
         launch = read_launch(file, values, packages, os.environ)
@@ -755,15 +790,22 @@ def build_parser() -> argparse.ArgumentParser:
     package.add_argument("--timeout", type=int, default=540, metavar="SECONDS", help="stop grading after this (default 540)")
     _add_rubric_options(package)
     package.set_defaults(handler=cmd_gradescope_package)
-    launch = commands.add_parser("launch", help="read a launch file as roslaunch does",
-                                 description="Print a launch file's parameters or nodes exactly as roslaunch does.")
-    launch.add_argument("file", type=Path, metavar="FILE", help="a roslaunch XML file (or PKG, then the file's name)")
+    launch = commands.add_parser("launch", help="read a launch file as roslaunch / ros2 launch do",
+                                 description="Print a launch file's parameters or nodes exactly as roslaunch does, or "
+                                             "what `ros2 launch` would start for a ROS 2 .launch.py.")
+    launch.add_argument("file", type=Path, metavar="FILE",
+                        help="a roslaunch XML or ROS 2 .launch.py file (or PKG, then the file's name)")
     launch.add_argument("args", nargs="*", metavar="NAME:=VALUE", help="launch args (before --dump-params/--nodes)")
     launch.add_argument("--packages", type=Path, action="append", metavar="DIR",
                         help="where $(find) looks for packages (repeatable; default: the folder around FILE's package)")
-    shown = launch.add_mutually_exclusive_group(required=True)
+    launch.add_argument("--workspace", type=Path, metavar="DIR",
+                        help="ROS 2: the submission or workspace whose packages the launch file sees (default: here)")
+    shown = launch.add_mutually_exclusive_group()
     shown.add_argument("--dump-params", action="store_true", help="the parameters, as `roslaunch --dump-params`")
-    shown.add_argument("--nodes", action="store_true", help="the node names, as `roslaunch --nodes`")
+    shown.add_argument("--nodes", action="store_true", help="the node names, as `roslaunch --nodes` (ROS 2: the "
+                                                            "processes `ros2 launch` would start)")
+    shown.add_argument("--show-args", action="store_true", help="ROS 2: the arguments, as `ros2 launch --show-args`")
+    shown.add_argument("--json", action="store_true", help="ROS 2: every process with its argv and parameter files")
     launch.set_defaults(handler=cmd_launch)
     rubric = commands.add_parser("rubric", help="check or try out a rubric file",
                                  description="Work on a task's rubric TOML (see rubrics/README.md).")

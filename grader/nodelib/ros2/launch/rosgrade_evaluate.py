@@ -177,7 +177,7 @@ def show_args(path: str) -> list[dict[str, Any]]:
     context.recorder = recorder
     description = recorder.load(path, "any", context)
     return [{"name": a.name, "description": a.description,
-             "default": None if a.default_value is None else "".join(s.describe() for s in a.default_value),
+             "default": None if a.default_value is None else " + ".join(s.describe() for s in a.default_value),
              "conditional": a._conditionally_included, "choices": a.choices}
             for a in description.get_launch_arguments()]
 

@@ -11,6 +11,7 @@ from launch.core import Action, LaunchContext, SubstitutionFailure, normalize_to
 from launch_ros import params
 from launch_ros.parameter_descriptions import Parameter, ParameterFile
 from launch_ros.substitutions import ExecutableInPackage
+from ament_index_python.packages import index
 
 __all__ = ["Node", "PushROSNamespace", "PushRosNamespace", "SetParameter", "SetRemap"]
 
@@ -98,7 +99,9 @@ class Node(ExecuteProcess):
             args += ["-r", f"{src}:={dst}"]
         described = super().describe_process(context)
         process_name = described["name"] if self.process_name is not None else os.path.basename(path)
-        return {**described, "kind": "node", "package": package, "executable": executable, "name": process_name,
+        entry = index().get(package or "", {})
+        return {**described, "kind": "node", "external": bool(entry.get("external")), "world": bool(entry.get("world")),
+                "package": package, "executable": executable, "name": process_name,
                 "node_name": name, "namespace": ns, "cmd": [path, *args], "args": args, "params_files": files}
 
 

@@ -1,0 +1,110 @@
+"""`rosgrade launch` for ROS 2 launch files: find the file as `ros2 launch` would, evaluate it confined, and print
+its processes (--nodes), its arguments (--show-args, as `ros2 launch --show-args`) or all of it (--json)."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+from grader.launch.ros2_eval import Evaluation, Ros2LaunchError, evaluate
+from grader.launch.ros2_index import installed, workspace_for
+from grader.workspace import WorkspaceError, read_workspace
+
+ROS2_SUFFIXES = (".launch.py", ".py", ".launch.yaml", ".launch.yml", ".yaml")
+
+
+def is_ros2_file(name: str) -> bool:
+    """Whether a launch file's name says ROS 2 (Python or YAML; XML is read as roslaunch XML)."""
+    return name.endswith(ROS2_SUFFIXES)
+
+
+def find_installed(workspace_dir: Path, package: str, file_name: str) -> Path:
+    """The launch file `ros2 launch PACKAGE FILE` would run: one the package's build installs into its share."""
+    workspace = read_workspace(workspace_dir)
+    found = workspace.package(package)
+    if found is None:
+        raise Ros2LaunchError(f"Package '{package}' not found: \"package '{package}' not found, searching: "
+                              f"['/opt/ros/jazzy']\" (no package.xml with <name>{package}</name> under {workspace_dir})")
+    candidates = sorted(p for p in found.folder.rglob(file_name) if "build" not in p.parts and "install" not in p.parts)
+    for path in candidates:
+        if installed(found, path):
+            return path
+    if candidates:
+        where = candidates[0].relative_to(found.folder)
+        raise Ros2LaunchError(
+            f"file '{file_name}' was not found in the share directory of package '{package}' which is at "
+            f"'/opt/ros/jazzy/share/{package}'. {where} is in the package but its build does not install it: list "
+            "its folder in setup.py's data_files (ament_python) or in install(DIRECTORY launch DESTINATION "
+            "share/${PROJECT_NAME}) in CMakeLists.txt (ament_cmake).")
+    raise Ros2LaunchError(f"file '{file_name}' was not found in the share directory of package '{package}'")
+
+
+def _full_name(process: dict[str, Any]) -> str:
+    name = process.get("node_name")
+    if name is None:
+        return f"{process['executable']} (the name its code gives it)"
+    namespace = process.get("namespace") or "/"
+    return (namespace.rstrip("/") + "/" + name) if not name.startswith("/") else name
+
+
+def _trigger(process: dict[str, Any]) -> str:
+    after = process.get("after")
+    parts = []
+    if after:
+        parts.append(f"when {after['process']} {'exits' if after['event'] == 'exit' else 'starts'}"
+                     if after.get("process") else "at shutdown")
+    if process.get("delay"):
+        parts.append(f"after {process['delay']:g} s")
+    return f"  [{', '.join(parts)}]" if parts else ""
+
+
+def nodes_text(result: dict[str, Any]) -> str:
+    """One line per process launch would start, in its start order."""
+    lines = []
+    for process in result.get("processes", []):
+        if process["kind"] == "node":
+            external = " (external: not run by rosgrade)" if process.get("external") else ""
+            lines.append(f"{_full_name(process)}  ({process['package']} {process['executable']}){external}"
+                         f"{_trigger(process)}")
+        else:
+            shell = " (shell)" if process["shell"] else ""
+            lines.append(f"{' '.join(process['cmd'])}{shell}{_trigger(process)}")
+    return "".join(line + "\n" for line in lines)
+
+
+def args_text(arguments: list[dict[str, Any]]) -> str:
+    """The arguments, as `ros2 launch --show-args` prints them."""
+    text = "Arguments (pass arguments as '<name>:=<value>'):\n"
+    for argument in arguments:
+        text += f"\n    '{argument['name']}':{'*' if argument['conditional'] else ''}\n        {argument['description']}\n"
+        if argument["default"] is not None:
+            text += f"        (default: {argument['default']})\n"
+    if not arguments:
+        text += "\n  No arguments.\n"
+    elif any(a["conditional"] for a in arguments):
+        text += "\n* argument(s) which are only used if specific conditions occur\n"
+    return text
+
+
+def run(file: Path, workspace_dir: Path | None, values: dict[str, str], mode: str) -> tuple[str, list[str]]:
+    """What `rosgrade launch` prints for a ROS 2 launch file, and notes for stderr; Ros2LaunchError on failure."""
+    try:
+        workspace = workspace_for(file, workspace_dir)
+    except WorkspaceError as exc:
+        raise Ros2LaunchError(str(exc)) from None
+    evaluation: Evaluation = evaluate(file, workspace, list(values.items()), show_args=mode == "show-args")
+    result = evaluation.result
+    if mode == "show-args":
+        return args_text(result["arguments"]), []
+    error = result.get("error")
+    if error:
+        where = f"\n  at {error['where']}" if error.get("where") else ""
+        raise Ros2LaunchError(f"[ERROR] [launch]: {error['message']}{where}")
+    declared = {a["name"] for a in result.get("arguments", [])}
+    notes = [f"argument {name}:={value} is not declared by the launch file (ros2 launch accepts it silently; it "
+             "changes nothing unless a LaunchConfiguration reads it)" for name, value in values.items()
+             if name not in declared]
+    notes += [f"[INFO] [launch.user]: {log['text']}" for log in result.get("logs", [])]
+    if mode == "json":
+        return json.dumps(result, indent=2) + "\n", notes
+    return nodes_text(result), notes
