@@ -250,3 +250,64 @@ class QoSPresetProfiles(Enum):
     @classmethod
     def get_from_short_key(cls, name: str) -> QoSProfile:
         return cls[name.upper()].value
+
+
+# -- matching (what rmw_fastrtps does at discovery; tests/conformance_ros2/qos_matrix_jazzy.json is the record) ------
+# The policies a publisher or subscription ends up with for SYSTEM_DEFAULT (Fast DDS's writer and reader defaults).
+_SYSTEM_DEFAULT_OFFERED = (ReliabilityPolicy.RELIABLE, DurabilityPolicy.TRANSIENT_LOCAL)
+_SYSTEM_DEFAULT_REQUESTED = (ReliabilityPolicy.BEST_EFFORT, DurabilityPolicy.VOLATILE)
+_INCOMPATIBLE_QOS_WARNING = ("New publisher discovered on topic '{topic}', offering incompatible QoS. "
+                             "No messages will be received from it. Last incompatible policy: {policy}")
+
+
+def offered_policies(profile: QoSProfile) -> tuple[ReliabilityPolicy, DurabilityPolicy]:
+    """A publisher's (reliability, durability) as it offers them, SYSTEM_DEFAULT resolved."""
+    reliability, durability = profile.reliability, profile.durability
+    if reliability == ReliabilityPolicy.SYSTEM_DEFAULT:
+        reliability = _SYSTEM_DEFAULT_OFFERED[0]
+    if durability == DurabilityPolicy.SYSTEM_DEFAULT:
+        durability = _SYSTEM_DEFAULT_OFFERED[1]
+    return reliability, durability
+
+
+def requested_policies(profile: QoSProfile, discovered: list[tuple[ReliabilityPolicy, DurabilityPolicy]]
+                       ) -> tuple[ReliabilityPolicy, DurabilityPolicy]:
+    """A subscription's (reliability, durability) as it requests them, resolved once, when it is created.
+
+    BEST_AVAILABLE asks for the most the publishers discovered by then all offer: RELIABLE and TRANSIENT_LOCAL when
+    every one offers it, and also when none has been discovered yet (so a subscription created in a node's
+    constructor, before discovery, asks for both and misses a VOLATILE publisher, as on Jazzy).
+    """
+    reliability, durability = profile.reliability, profile.durability
+    if reliability == ReliabilityPolicy.SYSTEM_DEFAULT:
+        reliability = _SYSTEM_DEFAULT_REQUESTED[0]
+    if durability == DurabilityPolicy.SYSTEM_DEFAULT:
+        durability = _SYSTEM_DEFAULT_REQUESTED[1]
+    if reliability == ReliabilityPolicy.BEST_AVAILABLE:
+        reliability = ReliabilityPolicy.RELIABLE if all(r == ReliabilityPolicy.RELIABLE for r, _ in discovered) \
+            else ReliabilityPolicy.BEST_EFFORT
+    if durability == DurabilityPolicy.BEST_AVAILABLE:
+        durability = DurabilityPolicy.TRANSIENT_LOCAL \
+            if all(d == DurabilityPolicy.TRANSIENT_LOCAL for _, d in discovered) else DurabilityPolicy.VOLATILE
+    return reliability, durability
+
+
+def incompatible_policy(offered: tuple[ReliabilityPolicy, DurabilityPolicy],
+                        requested: tuple[ReliabilityPolicy, DurabilityPolicy]) -> QoSPolicyKind | None:
+    """The last policy in which a publisher offers less than a subscription requests (None: they match).
+
+    A subscription that requests RELIABLE gets nothing from a BEST_EFFORT publisher, one that requests
+    TRANSIENT_LOCAL nothing from a VOLATILE one; the reverse pairs match. Reliability is checked after durability,
+    so it is the one named when both differ.
+    """
+    last = None
+    if offered[1] == DurabilityPolicy.VOLATILE and requested[1] == DurabilityPolicy.TRANSIENT_LOCAL:
+        last = QoSPolicyKind.DURABILITY
+    if offered[0] == ReliabilityPolicy.BEST_EFFORT and requested[0] == ReliabilityPolicy.RELIABLE:
+        last = QoSPolicyKind.RELIABILITY
+    return last
+
+
+def incompatible_qos_warning(topic: str, policy: QoSPolicyKind) -> str:
+    """What a subscription's default event handler logs when it discovers a publisher it cannot match."""
+    return _INCOMPATIBLE_QOS_WARNING.format(topic=topic, policy=qos_policy_name_from_kind(policy))
