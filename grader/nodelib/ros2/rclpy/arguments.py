@@ -1,85 +1,71 @@
-"""The ``--ros-args`` command line as rcl reads it: parameters, remaps, log levels; and the YAML scalars of ``-p``."""
+"""The ``--ros-args`` command line as rcl reads it: parameter files and ``-p`` values, remaps, log levels."""
 from __future__ import annotations
 
-import json
-import re
 from dataclasses import dataclass, field
+
+from rosgrade_param_files import ParamFileError, ParamSet
+
+from ._rclpy_pybind11 import RCLError
+from .logging import get_logger
 
 _FLAGS_WITH_VALUE = {"-p", "--param", "-r", "--remap", "--params-file", "--log-level", "-e", "--enclave",
                      "--log-config-file", "--log-file-name"}
 _LOG_LEVELS = {"unset": 0, "debug": 10, "info": 20, "warn": 30, "warning": 30, "error": 40, "fatal": 50}
 
-_NULL = re.compile(r"^(?:~|null|Null|NULL|)$")
-_TRUE = re.compile(r"^(?:y|Y|yes|Yes|YES|true|True|TRUE|on|On|ON)$")
-_FALSE = re.compile(r"^(?:n|N|no|No|NO|false|False|FALSE|off|Off|OFF)$")
-_INT = re.compile(r"^[-+]?(?:0|[1-9][0-9_]*)$")
-_HEX = re.compile(r"^[-+]?0x[0-9a-fA-F_]+$")
-_FLOAT = re.compile(r"^[-+]?(?:[0-9][0-9_]*)?\.?[0-9_]*(?:[eE][-+]?[0-9]+)?$")
-_INF = re.compile(r"^([-+]?)\.(?:inf|Inf|INF)$")
-_NAN = re.compile(r"^\.(?:nan|NaN|NAN)$")
+
+class RCLInvalidROSArgsError(RCLError):
+    """A node's own ``cli_args`` hold a ROS argument rcl refuses (real rclpy's C extension defines it)."""
+
+    __module__ = "rclpy._rclpy_pybind11"
 
 
-class ArgumentError(ValueError):
-    """A ROS argument is malformed (rcl refuses it at rclpy.init)."""
+# How rclpy words an rcl refusal of the command line: at rclpy.init (global) and at Node creation (cli_args).
+_GLOBAL = "failed to initialize rcl: "
+_LOCAL = "Failed to parse ROS arguments: "
+_ARGUMENTS_C = "/project/src/rcl/arguments.c"
+# What rcl calls each flag's value in its refusal, and where it words it.
+_KINDS = {"-p": ("parameter override rule", 352), "--param": ("parameter override rule", 352),
+          "--params-file": ("params file", 415), "-r": ("remap rule", 380), "--remap": ("remap rule", 380),
+          "--log-level": ("log level", 441)}
 
 
 @dataclass
 class RosArgs:
-    """What the ``--ros-args`` sections of a command line say. Keys of ``params`` and ``remaps`` are
-    (node name or '' for every node, name)."""
+    """What the ``--ros-args`` sections of a command line say. ``overrides`` holds its parameter files and ``-p``
+    values in order; keys of ``remaps`` are (node name or '' for every node, name)."""
 
-    params: dict[tuple[str, str], object] = field(default_factory=dict)
+    overrides: ParamSet = field(default_factory=ParamSet)
     remaps: list[tuple[str, str, str]] = field(default_factory=list)  # (node or '', from, to)
     log_levels: dict[str, int] = field(default_factory=dict)  # logger name ('' = default) -> severity
     non_ros: list[str] = field(default_factory=list)
 
+    @property
+    def params(self) -> dict[tuple[str, str], object]:
+        """Every value set, by (node key, or '' for every node, name)."""
+        return {("" if node == "/**" else node, param.name): param.value()
+                for node, params in self.overrides.nodes.items() for param in params}
+
 
 def parse_scalar(text: str):
-    """A parameter value as rcl's YAML reading of ``-p name:=value`` gives it."""
-    s = text.strip()
-    if _TRUE.match(s):
-        return True
-    if _FALSE.match(s):
-        return False
-    if _INT.match(s):
-        return int(s.replace("_", ""))
-    if _HEX.match(s):
-        return int(s.replace("_", ""), 16)
-    if any(c.isdigit() for c in s) and _FLOAT.match(s):
-        return float(s.replace("_", ""))
-    if m := _INF.match(s):
-        return float(m.group(1) + "inf")
-    if _NAN.match(s):
-        return float("nan")
-    if len(s) >= 2 and s[0] == s[-1] and s[0] in "'\"":
-        return s[1:-1]
-    if s.startswith("[") and s.endswith("]"):
-        inner = s[1:-1].strip()
-        return [parse_scalar(part) for part in _split_flow(inner)] if inner else []
-    if _NULL.match(s):
-        return None
-    return s
+    """A parameter value as rcl reads ``-p name:=text`` (None: an empty sequence, a parameter left unset)."""
+    values = ParamSet()
+    values.set_value("/**", "value", text)
+    return values.for_node("/any")["value"]
 
 
-def _split_flow(inner: str) -> list[str]:
-    try:
-        return [json.dumps(v) if isinstance(v, str) else str(v).lower() if isinstance(v, bool) else str(v)
-                for v in json.loads("[" + inner + "]")]
-    except ValueError:
-        return [p.strip() for p in inner.split(",")]
-
-
-def _node_scoped(rule: str) -> tuple[str, str, str]:
-    """'node:from:=to' or 'from:=to' -> (node or '', from, to)."""
+def _node_scoped(rule: str) -> tuple[str, str, str] | None:
+    """'node:from:=to' or 'from:=to' -> (node or '', from, to); None when it is neither."""
     lhs, sep, rhs = rule.partition(":=")
     if not sep or not lhs:
-        raise ArgumentError(f"Couldn't parse rule '{rule}'")
+        return None
     node, colon, name = lhs.rpartition(":")
     return (node if colon else "", name, rhs)
 
 
-def parse(argv: list[str]) -> RosArgs:
-    """Split ``argv`` into ROS arguments (after ``--ros-args``, up to ``--``) and the rest."""
+def parse(argv: list[str], *, node_args: bool = False) -> RosArgs:
+    """Split ``argv`` into ROS arguments (after ``--ros-args``, up to ``--``) and the rest, reading parameter files
+    and ``-p`` values in order. A refused argument raises what rclpy raises: RCLError at rclpy.init, and
+    RCLInvalidROSArgsError for a node's own ``cli_args`` (``node_args``), with rcl's text."""
     out = RosArgs()
     in_ros = False
     i = 0
@@ -98,18 +84,55 @@ def parse(argv: list[str]) -> RosArgs:
         if arg not in _FLAGS_WITH_VALUE:
             continue  # --enable-rosout-logs and the like change nothing here
         if i >= len(argv):
-            raise ArgumentError(f"Couldn't parse trailing {arg} flag. No value given.")
+            raise _refused(_trailing(arg), node_args)
         value = argv[i]
         i += 1
-        if arg in ("-p", "--param"):
-            node, name, text = _node_scoped(value)
-            out.params[(node, name)] = parse_scalar(text)
-        elif arg in ("-r", "--remap"):
-            out.remaps.append(_node_scoped(value))
-        elif arg == "--log-level":
-            name, sep, level = value.rpartition(":=")
-            level_value = _LOG_LEVELS.get(level.lower())
-            if level_value is None:
-                raise ArgumentError(f"Argument {value} is not a valid log level rule")
-            out.log_levels[name if sep else ""] = level_value
+        try:
+            _apply(out, arg, value)
+        except ParamFileError as exc:
+            kind, line = _KINDS[arg]
+            raise _refused(f"Couldn't parse {kind}: '{arg} {value}'. Error: {exc}, at {_ARGUMENTS_C}:{line}",
+                           node_args) from None
     return out
+
+
+def _apply(out: RosArgs, flag: str, value: str) -> None:
+    """Take one flag's value into ``out``; ParamFileError with rcl's inner text when rcl would refuse it."""
+    if flag in ("-p", "--param"):
+        rule = _node_scoped(value)
+        if rule is None:
+            raise ParamFileError(f"Couldn't parse rule '{value}'", None)
+        node, name, text = rule
+        out.overrides.set_value(node or "/**", name, text)
+    elif flag == "--params-file":
+        out.overrides.read_file(value)
+    elif flag in ("-r", "--remap"):
+        rule = _node_scoped(value)
+        if rule is None:
+            raise ParamFileError(f"Couldn't parse rule '{value}'", None)
+        out.remaps.append(rule)
+    elif flag == "--log-level":
+        name, sep, level = value.rpartition(":=")
+        level_value = _LOG_LEVELS.get(level.lower())
+        if level_value is None:
+            raise ParamFileError(f"Argument {value} is not a valid log level rule", None)
+        out.log_levels[name if sep else ""] = level_value
+
+
+def _trailing(flag: str) -> str:
+    """rcl's text for a flag with nothing after it."""
+    if flag in ("-p", "--param"):
+        return f"Couldn't parse trailing {flag} flag. No parameter override rule found., at {_ARGUMENTS_C}:356"
+    if flag in ("-r", "--remap"):
+        return f"Couldn't parse trailing {flag} flag. No remap rule found., at {_ARGUMENTS_C}:384"
+    if flag == "--params-file":
+        return f"Couldn't parse trailing {flag} flag. No file path provided., at {_ARGUMENTS_C}:419"
+    return f"Couldn't parse trailing {flag} flag. No value given."
+
+
+def _refused(text: str, node_args: bool) -> RCLError:
+    """What rclpy raises for a command line rcl refuses; rcl_init logs its line on stderr first."""
+    if node_args:
+        return RCLInvalidROSArgsError(_LOCAL + text)
+    get_logger("rcl").error("Failed to parse global arguments")
+    return RCLError(_GLOBAL + text)

@@ -72,7 +72,7 @@ class Node:
             raise NotInitializedException("cannot create node")
         from . import arguments
         ros_args = self._context.ros_args if use_global_arguments else arguments.RosArgs()
-        local = arguments.parse(["--ros-args", *cli_args]) if cli_args else arguments.RosArgs()
+        local = arguments.parse(list(cli_args), node_args=True) if cli_args else arguments.RosArgs()
         self._remaps = local.remaps + ros_args.remaps
         try:
             names.validate_node_name(node_name)
@@ -132,7 +132,8 @@ class Node:
         return node_name, namespace
 
     def _collect_overrides(self, ros_args, local, parameter_overrides) -> dict[str, Parameter]:
-        """Parameter overrides, lowest first: the grader's (START), global -p, node-scoped -p, the constructor's."""
+        """Parameter overrides, lowest first: the grader's (START); the command line's parameter files and -p values
+        that name this node, then its own cli_args' (as rclpy reads them); the constructor's."""
         overrides: dict[str, object] = {}
         fq = self.get_fully_qualified_name().lstrip("/")
         for key, value in runtime.params.items():
@@ -142,8 +143,7 @@ class Node:
             elif key.startswith(fq + "/"):
                 overrides[key[len(fq) + 1:].replace("/", PARAMETER_SEPARATOR_STRING)] = value
         for args in (ros_args, local):
-            for scope in ("", "*", self._name, self.get_fully_qualified_name()):
-                overrides.update({name: value for (s, name), value in args.params.items() if s == scope})
+            overrides.update(args.overrides.for_node(self.get_fully_qualified_name()))
         result = {name: Parameter(name, value=value) for name, value in overrides.items()}
         if parameter_overrides is not None:
             result.update({p.name: p for p in parameter_overrides})
