@@ -1,13 +1,36 @@
 """rclpy.subscription.Subscription: a reader whose deliveries (CDR bytes from BATCH frames) wait in a KEEP_LAST
-queue of the QoS depth until an executor takes them."""
+queue of the QoS depth until an executor takes them.
+
+A subscription to one of the simulated robot's topics whose QoS cannot match the robot's publisher (a RELIABLE one
+against a BEST_EFFORT publisher, a TRANSIENT_LOCAL one against a VOLATILE publisher) receives nothing, and its node
+logs rclpy's "offering incompatible QoS" warning when it first spins after discovery, as real rclpy does.
+"""
 from __future__ import annotations
 
 import inspect
 from collections import deque
 
+from rosgrade_node import runtime
+
 from . import _graph, _runtime
 from ._rclpy_pybind11 import DESTROYED, InvalidHandle
-from .qos import DurabilityPolicy
+from .qos import (DurabilityPolicy, QoSPolicyKind, ReliabilityPolicy, incompatible_policy, incompatible_qos_warning,
+                  requested_policies)
+
+# How the simulated robot offers every topic it publishes: as the Jazzy simulation's ros_gz_bridge offers each topic
+# it bridges (rclcpp::QoS(KeepLast(10)) in ros_gz_bridge's factory.hpp: RELIABLE, VOLATILE).
+WORLD_OFFERED = (ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE)
+
+
+def _world_mismatch(topic: str, qos_profile) -> QoSPolicyKind | None:
+    """The policy in which the robot's publisher cannot serve a subscription to ``topic`` (None: it matches, or the
+    robot does not publish there). BEST_AVAILABLE is resolved now: against the robot's publisher once this process
+    has matched anything (its discovery is over), else against none."""
+    if not any(name == topic for name, _ in runtime.world_topics):
+        return None
+    discovered = [WORLD_OFFERED] if runtime.scheduler is not None and any(runtime.scheduler.connections.values()) \
+        else []
+    return incompatible_policy(WORLD_OFFERED, requested_policies(qos_profile, discovered))
 
 
 def _wants_info(callback) -> bool:
@@ -35,13 +58,21 @@ class Subscription:
         self._with_info = _wants_info(callback)
         self._keep = qos_profile.keeps()
         self._queue: deque[tuple[bytes, int]] = deque()
+        self._mismatch = _world_mismatch(topic, qos_profile)  # the policy the robot's publisher fails, if any
+        self._warned = False
+        self._warning_due = False  # the robot's publisher was discovered: the default event handler's warning is due
         self._handle: int | None = _graph.register(
             "sub", topic, msg_type, self._keep, qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL,
             node.context)
         _runtime.scheduler().add_sink(self._handle, self._push)
 
     def _push(self, data: bytes):
-        """A delivery: keep the newest ``depth`` messages (KEEP_LAST drops the oldest)."""
+        """A delivery: keep the newest ``depth`` messages (KEEP_LAST drops the oldest); none from a publisher whose
+        QoS does not match (the first one makes the warning due: the publisher has been discovered)."""
+        if self._mismatch is not None:
+            if not self._warned:
+                self._warned = self._warning_due = True
+            return None
         self._queue.append((data, _runtime.system_ns()))
         if self._keep is not None:
             while len(self._queue) > self._keep:
@@ -49,10 +80,15 @@ class Subscription:
         return None
 
     def has_message(self) -> bool:
-        return bool(self._queue)
+        return bool(self._queue) or self._warning_due
 
     def take(self):
-        """(message or raw bytes, MessageInfo dict) of the oldest queued delivery, or None."""
+        """(message or raw bytes, MessageInfo dict) of the oldest queued delivery, or None (also after logging a due
+        incompatible-QoS warning, which the executor handles as an event)."""
+        if self._warning_due:
+            self._warning_due = False
+            self._node.get_logger().warning(incompatible_qos_warning(self.topic, self._mismatch))
+            return None
         if not self._queue:
             return None
         data, received = self._queue.popleft()
@@ -69,8 +105,10 @@ class Subscription:
             self.callback(msg)
 
     def get_publisher_count(self) -> int:
+        """Publishers matched (the robot's is not, when its QoS is incompatible)."""
         _runtime.charge()
-        return _graph.connections(self._check_handle())
+        count = _graph.connections(self._check_handle())
+        return max(count - 1, 0) if self._mismatch is not None else count
 
     def _check_handle(self) -> int:
         if self._handle is None:
