@@ -99,11 +99,19 @@ class Recorder:
             raise InvalidLaunchFileError(f"[Errno 2] No such file or directory: '{path}'") \
                 if kind != "any" else FileNotFoundError(2, "No such file or directory", path)
         if path.endswith(".py") or kind == "python":
-            module = load_python_launch_file_as_module(path)
-            if not hasattr(module, "generate_launch_description"):
-                raise InvalidLaunchFileError(f"launch file at '{path}' does not contain the required function "
-                                             "'generate_launch_description()'")
-            description = module.generate_launch_description()
+            try:
+                module = load_python_launch_file_as_module(path)
+                if not hasattr(module, "generate_launch_description"):
+                    raise InvalidLaunchFileError(f"launch file at '{path}' does not contain the required function "
+                                                 "'generate_launch_description()'")
+                description = module.generate_launch_description()
+            except Exception as exc:
+                if kind != "any":
+                    raise
+                raise InvalidLaunchFileError(
+                    "Caught multiple exceptions when trying to load file of format [py]:\n"
+                    f" - {type(exc).__name__}: {exc}\n - InvalidFrontendLaunchFileError: The launch file may have a "
+                    "syntax error, or its format is unknown").with_traceback(exc.__traceback__) from None
         else:
             raise InvalidLaunchFileError(f"{os.path.basename(path)}: rosgrade reads ROS 2 launch files written in "
                                          "Python (.launch.py) so far; XML and YAML ones are not read yet")

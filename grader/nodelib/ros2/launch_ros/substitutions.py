@@ -43,5 +43,5 @@ class ExecutableInPackage(Substitution):
         entry = _entry(package)
         if entry.get("external") or executable in entry.get("executables", []):
             return f"{entry['prefix']}/lib/{package}/{executable}"
-        raise SubstitutionFailure(f"package '{package}' found at '{entry['prefix']}', but executable "
-                                  f"'{executable}' was not found")
+        raise SubstitutionFailure(f"executable '{executable}' not found on the libexec directory "
+                                  f"'{entry['prefix']}/lib/{package}' ")

@@ -1,0 +1,110 @@
+"""Record what real ROS 2 Jazzy launch starts for each case in cases/runs.json (run where real launch is installed).
+
+``python record_real.py`` under an interpreter that imports real launch, launch_ros and rclpy (Jazzy). It installs
+nothing and fetches nothing: the case package is laid out as colcon would install it in a temporary prefix, with
+stand-in executables, and each case runs through launch's own LaunchService as `ros2 launch` runs it. A handler on
+every process start records its argv and the parameter files it is handed; errors are what launch logs. Writes
+cases/real_records.json.
+"""
+from __future__ import annotations
+
+import json
+import logging
+import os
+import shutil
+import stat
+import sys
+import tempfile
+import types
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+CASES = HERE / "cases"
+PACKAGE = CASES / "ws" / "course_pkg"
+EXECUTABLES = {"course_pkg": ["mover", "square", "follower", "beacon_search", "figure_of_eight", "waypoints",
+                              "wall_follower", "talker", "listener"],
+               "turtlesim": ["turtlesim_node", "mimic", "turtle_teleop_key", "draw_square"],
+               "rviz2": ["rviz2"]}
+
+
+def install(prefix: Path) -> None:
+    """The case package and the world's packages as colcon would install them, with stand-in executables."""
+    index = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    index.mkdir(parents=True)
+    for package, names in EXECUTABLES.items():
+        (index / package).write_text("")
+        share = prefix / "share" / package
+        if package == "course_pkg":
+            for folder in ("launch", "config"):
+                shutil.copytree(PACKAGE / folder, share / folder)
+        share.mkdir(parents=True, exist_ok=True)
+        lib = prefix / "lib" / package
+        lib.mkdir(parents=True)
+        for name in names:
+            (lib / name).write_text("#!/bin/sh\nexit 0\n")
+            (lib / name).chmod(stat.S_IRWXU)
+
+
+def record(case: dict, prefix: Path) -> dict:
+    import launch
+    from launch.actions import IncludeLaunchDescription, RegisterEventHandler
+    from launch.event_handlers import OnProcessStart
+    from launch.launch_description_sources import AnyLaunchDescriptionSource
+
+    started: list[dict] = []
+    logs: list[str] = []
+
+    def on_start(event, context):
+        cmd = list(event.cmd)
+        files = []
+        for index, word in enumerate(cmd[:-1]):
+            if word == "--params-file":
+                files.append(Path(cmd[index + 1]).read_text())
+        started.append({"name": event.process_name, "cmd": cmd, "params_files": files})
+
+    class Catch(logging.Handler):
+        def emit(self, record: logging.LogRecord) -> None:
+            logs.append(record.getMessage())
+
+    handler = Catch()
+    loggers = [logging.getLogger(), logging.getLogger("launch"), logging.getLogger("launch.user")]
+    for logger in loggers:
+        logger.addHandler(handler)
+    service = launch.LaunchService(argv=[f"{k}:={v}" for k, v in case["args"].items()])
+    path = prefix / "share" / "course_pkg" / "launch" / case["file"]
+    service.include_launch_description(launch.LaunchDescription([
+        RegisterEventHandler(OnProcessStart(on_start=on_start)),
+        IncludeLaunchDescription(AnyLaunchDescriptionSource(str(path)), launch_arguments=case["args"].items()),
+    ]))
+    service.run()
+    for logger in loggers:
+        logger.removeHandler(handler)
+    errors = [m for m in logs if m.startswith("Caught exception in launch")]
+    user = [m for m in logs if m in {"Turtlesim started, spawning turtle", "Spawn finished",
+                                     "square done, shutting down"} or m.startswith("mode is ")]
+    return {"processes": started, "error": errors[0] if errors else None, "logs": user}
+
+
+def main() -> None:
+    # launch_ros imports composition_interfaces for composable nodes, which no case uses; the PyPI wheels lack it.
+    if "composition_interfaces" not in sys.modules:
+        module = types.ModuleType("composition_interfaces")
+        service = type("Service", (), {"Request": object, "Response": object})
+        module.srv = types.SimpleNamespace(LoadNode=service, UnloadNode=service, ListNodes=service)
+        sys.modules["composition_interfaces"] = module
+        sys.modules["composition_interfaces.srv"] = module.srv
+    out = {}
+    with tempfile.TemporaryDirectory(prefix="rosgrade-real-launch-") as tmp:
+        prefix = Path(tmp) / "install"
+        install(prefix)
+        os.environ["AMENT_PREFIX_PATH"] = str(prefix)
+        os.environ.pop("ROSGRADE_MODEL", None)
+        for case in json.loads((CASES / "runs.json").read_text()):
+            result = record(case, prefix)
+            text = json.dumps(result).replace(str(prefix), "<prefix>")
+            out[case["id"]] = json.loads(text)
+    (CASES / "real_records.json").write_text(json.dumps(out, indent=1, sort_keys=True) + "\n")
+
+
+if __name__ == "__main__":
+    main()
