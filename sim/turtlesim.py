@@ -432,14 +432,15 @@ class TurtlesimWorld(ScenarioTimes):
         return ServiceResult(True, {}, (said, spawned))
 
     def _spawn_service(self, request: Request) -> ServiceResult:
-        """/spawn: a new turtle with its own topics and services; a taken name fails, as does one roscpp refuses."""
+        """/spawn: a new turtle with its own topics and services; a taken name fails, as does one roscpp refuses (the
+        response is left empty, which is what a ROS 2 caller gets back)."""
         name = str(request["name"])
         if name in self.turtles:
-            return ServiceResult(False, {}, (self._log(ERROR, f"A turtled named [{name}] already exists"),))
+            return ServiceResult(False, {"name": ""}, (self._log(ERROR, f"A turtled named [{name}] already exists"),))
         problem = _name_problem(name)
         if problem:
             said = self._log(ERROR, f"Exception thrown while processing service call: {problem}")
-            return ServiceResult(False, {}, (said,), error=problem)
+            return ServiceResult(False, {"name": ""}, (said,), error=problem)
         name, said = self._spawn(name, float(request["x"]), float(request["y"]), float(request["theta"]))
         return ServiceResult(True, {"name": name}, (said,))
 

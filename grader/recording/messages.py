@@ -170,6 +170,11 @@ class MessageCatalog:
         match = _TYPE_NAME.match(service_name)
         return match is not None and f"{match.group(1)}/{match.group(2)}" in self._service_md5s
 
+    @staticmethod
+    def service_type(service_name: str) -> str:
+        """The spelling a client's call names a service type in: ``pkg/Name``."""
+        return ros1_type_name(service_name)
+
     def service_md5sum(self, service_name: str) -> str:
         """The ROS 1 md5sum of a known service (md5 of request and response md5 texts)."""
         try:

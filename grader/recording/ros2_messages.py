@@ -65,6 +65,9 @@ SERVICES = {
 }
 
 
+# ROS 1 types whose role ROS 2 gives another package's type (rosgraph_msgs has only Clock in ROS 2).
+_ROS2_COUNTERPARTS = {"rosgraph_msgs/Log": "rcl_interfaces/msg/Log"}
+
 # rosidl gives a structure with no fields this one uint8 member, on the wire too.
 _EMPTY_STRUCT = "uint8 structure_needs_at_least_one_member"
 
@@ -122,8 +125,9 @@ class Ros2Catalog:
 
     @staticmethod
     def canonical(type_name: str) -> str:
-        """The spelling this catalog records and compares: ``pkg/msg/Name``."""
-        return ros2_type_name(type_name)
+        """The spelling this catalog records and compares: ``pkg/msg/Name``; ROS 1's ``rosgraph_msgs/Log`` (what a
+        world declares its /rosout as, once for both flavours) is ROS 2's ``rcl_interfaces/msg/Log``."""
+        return _ROS2_COUNTERPARTS.get(type_name) or ros2_type_name(type_name)
 
     def _name(self, type_name: str) -> str:
         name = ros2_type_name(type_name)
@@ -192,6 +196,14 @@ class Ros2Catalog:
 
     def known_service(self, service_name: str) -> bool:
         return _service_name(service_name) in self._services
+
+    @staticmethod
+    def service_type(service_name: str) -> str:
+        """The spelling a client's call names a service type in: ``pkg/srv/Name`` (``pkg/Name`` is accepted)."""
+        name = _service_name(service_name)
+        if not name:
+            raise RecordingError(f"{service_name!r} is not a service type name (expected 'package/srv/Type')")
+        return name
 
     def service_md5sum(self, service_name: str) -> str:
         """The RIHS01 hash of a known service (what a ROS 2 client and server must agree on): the node library's,

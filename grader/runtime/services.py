@@ -68,7 +68,9 @@ class _WorldServer:
     origin = "world"
 
     def __init__(self, served: WorldService, router: ServiceRouter) -> None:
-        self.name, self.type = served.name, served.type
+        # The world names a srv type once for both flavours (``turtlesim/Spawn``); a ROS 2 client's call spells it
+        # ``turtlesim/srv/Spawn``.
+        self.name, self.type = served.name, router.wire.catalog.service_type(served.type)
         self.md5sum = router.wire.catalog.service_md5sum(served.type)
         self.callerid = router.world.node_name
 
@@ -81,8 +83,10 @@ class _WorldServer:
         for sample in result.samples:
             router.world_sample(sample)
         router.world_changed()  # a spawned or killed turtle's topics and services
-        if not result.ok:
+        if not result.ok and router.wire.name == "ros1":
             return ServiceReply(ch.SERVICE_FAILED, result.error)
+        # A ROS 2 server has no failure reply: what turtlesim's callbacks return is ignored and the response goes out
+        # as the callback left it (/spawn of a taken name answers an empty name).
         return ServiceReply(ch.SERVICE_OK, response=router.wire.response_bytes(self.type, result.response))
 
 

@@ -112,7 +112,7 @@ def test_unnamed_spawns_take_the_next_free_turtle_number() -> None:
 def test_spawning_a_taken_name_fails_and_logs_turtlesims_error() -> None:
     w = world()
     result = spawn(w, 1.0, 1.0, name="turtle1")
-    assert not result.ok and result.error == "" and result.response == {}
+    assert not result.ok and result.error == "" and result.response == {"name": ""}  # what a ROS 2 caller gets back
     assert logs(result) == [(8, "A turtled named [turtle1] already exists")]
     assert list(w.turtles) == ["turtle1"]
     assert w.turtles["turtle1"].x == CENTRE
