@@ -1,0 +1,84 @@
+"""Hostile ROS 2 launch files: each gets a clear finding in bounded time, and nothing outside the sandbox changes."""
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import pytest
+
+from grader.launch.ros2_eval import LIMITS, Ros2LaunchError, evaluate
+from grader.workspace import read_workspace
+
+PACKAGE_XML = ('<?xml version="1.0"?><package format="3"><name>evil_pkg</name><version>0.0.0</version>'
+               '<description>x</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>'
+               '<export><build_type>ament_python</build_type></export></package>')
+HEAD = "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+ATTACKS = {
+    "loop": HEAD + "def generate_launch_description():\n    while True:\n        pass\n",
+    "self_include": HEAD + (
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([IncludeLaunchDescription(PythonLaunchDescriptionSource(__file__))])\n"),
+    "many_nodes": HEAD + ("def generate_launch_description():\n    return LaunchDescription("
+                          "[Node(package='turtlesim', executable='turtlesim_node', name=f'n{i}') for i in range(10000)])\n"),
+    "absent_import": "import com2009_secret_helpers\n" + HEAD,
+    "write_outside": HEAD + ("def generate_launch_description():\n"
+                             "    open({target!r}, 'w').write('pwned')\n    return LaunchDescription([])\n"),
+}
+
+
+@pytest.fixture(scope="module")
+def results(tmp_path_factory: pytest.TempPathFactory) -> dict[str, tuple[object, float]]:
+    root = tmp_path_factory.mktemp("evil")
+    package = root / "evil_pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(PACKAGE_XML)
+    target = root / "outside.txt"
+    found: dict[str, tuple[object, float]] = {}
+    for name, text in ATTACKS.items():
+        path = package / "launch" / f"{name}.launch.py"
+        path.write_text(text.format(target=str(target)) if "{target" in text else text)
+        start = time.monotonic()
+        try:
+            outcome: object = evaluate(path, read_workspace(root), []).result
+        except Ros2LaunchError as exc:
+            outcome = exc
+        found[name] = (outcome, time.monotonic() - start)
+    found["_target"] = (target, 0.0)
+    return found
+
+
+def _message(outcome: object) -> str:
+    if isinstance(outcome, Ros2LaunchError):
+        return str(outcome)
+    assert isinstance(outcome, dict) and outcome["error"], outcome
+    return outcome["error"]["message"]
+
+
+@pytest.mark.slow
+def test_endless_loop_is_stopped_in_bounded_time(results: dict) -> None:
+    outcome, took = results["loop"]
+    assert "did not finish" in _message(outcome) or "CPU" in _message(outcome)
+    assert took < LIMITS.wall_s + 5
+
+
+@pytest.mark.slow
+def test_self_include_is_a_finding(results: dict) -> None:
+    assert "includes itself" in _message(results["self_include"][0])
+
+
+@pytest.mark.slow
+def test_ten_thousand_nodes_are_refused(results: dict) -> None:
+    assert "more than 200 processes" in _message(results["many_nodes"][0])
+
+
+@pytest.mark.slow
+def test_absent_import_is_named(results: dict) -> None:
+    assert "No module named 'com2009_secret_helpers'" in _message(results["absent_import"][0])
+
+
+@pytest.mark.slow
+def test_writing_outside_the_submission_fails_and_writes_nothing(results: dict) -> None:
+    assert _message(results["write_outside"][0])
+    assert not Path(results["_target"][0]).exists()
