@@ -14,11 +14,12 @@ setup(
     zip_safe=True,
     maintainer='rosgrade',
     maintainer_email='rosgrade@example.org',
-    description='ROS 2 reference solution for the action tutorial (Fibonacci action server)',
+    description='ROS 2 reference solution for the action tutorial (Fibonacci action server and client)',
     license='MIT',
     entry_points={
         'console_scripts': [
             'fibonacci_action_server = py_action.fibonacci_action_server:main',
+            'fibonacci_action_client = py_action.fibonacci_action_client:main',
         ],
     },
 )

@@ -184,7 +184,7 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     assert every == {(t, c) for t, c, _ in CRITERIA} | shutdown
     assert {c for _, c in shutdown} == {"shutdown_stop"}
     assert set(RUBRICS) - set(DRIVING_TASKS) == {  # compared on their own below
-        "add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci"}
+        "add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci", "fibonacci_client"}
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:
@@ -364,3 +364,30 @@ def test_ctrl_c_after_the_goals_changes_no_fibonacci_credit(criterion: str) -> N
     assert interrupted.score == plain.score and interrupted.measured["judged_until_ctrl_c"]
     assert {k: v for k, v in interrupted.measured.items() if k != "judged_until_ctrl_c"} == {
         k: v for k, v in plain.measured.items() if k != "judged_until_ctrl_c"}
+
+
+def _fibonacci_client(ctrl_c: bool) -> dict[str, RunData]:
+    """A correct client: order 10 sent, the grader's server's feedback and result logged; with Ctrl+C at the end, it
+    logs nonsense after it."""
+    runs = {}
+    sequence = [0, 1, 1, 2, 3, 5, 8, 13, 21, 34, 55]
+    for s in RUBRICS["fibonacci_client"].scenarios:
+        t0, end = s.start_time, s.duration
+        calls = (ServiceCall(t0 + 0.5, "/fibonacci/_action/send_goal", {"goal": {"order": 10}}, {"accepted": True}),
+                 ServiceCall(t0 + 0.6, "/fibonacci/_action/get_result", {}, {"status": 4,
+                                                                             "result": {"sequence": sequence}}))
+        lines = [OutputLine(t0 + 0.6 + 0.2 * k, "rosout", f"Received feedback: {sequence[:k + 3]}", "INFO")
+                 for k in range(9)] + [OutputLine(t0 + 2.5, "rosout", f"Result: {sequence}", "INFO")]
+        late = [OutputLine(t0 + end + 0.5, "rosout", "nonsense", "INFO")] if ctrl_c else []
+        data = run([(end + (AFTER_S if ctrl_c else 0.0), 0.0, 0.0)], t0=t0,
+                   info=RunInfo(shutdown_requested_s=t0 + end if ctrl_c else None), shutdown_at=end if ctrl_c else None)
+        runs[s.name] = replace(data, service_calls=calls, lines=tuple(lines + late))
+    return runs
+
+
+@pytest.mark.parametrize("criterion", [c.id for c in RUBRICS["fibonacci_client"].criteria])
+def test_ctrl_c_after_the_result_changes_no_action_client_credit(criterion: str) -> None:
+    plain, interrupted = (next(c for c in score_task(RUBRICS["fibonacci_client"], _fibonacci_client(ctrl_c))
+                               .criteria if c.id == criterion) for ctrl_c in (False, True))
+    assert plain.score == plain.max_score, plain.feedback
+    assert interrupted.score == plain.score, interrupted.feedback

@@ -33,6 +33,7 @@ CONTRACT = {
     "number_game": ["serves", "hints", "counts_guesses", "cheat", "correct_guess"],
     "number_game_client": ["sends_request", "reports_response"],
     "fibonacci": ["accepts_goal", "feedback", "result", "cancel_stops"],
+    "fibonacci_client": ["sends_goal", "reports_feedback", "reports_result"],
 }
 
 MINIMAL = '''
