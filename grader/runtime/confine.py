@@ -30,6 +30,7 @@ from pathlib import Path
 
 # Where the node's private, writable folder is mounted inside the sandbox; also its HOME, TMPDIR and cwd.
 SANDBOX_HOME = "/tmp"
+FILES_DIR = SANDBOX_HOME + "/rosgrade-files"  # the files a node is given by content (NodeSpec.files), read-only
 HOSTNAME = "rosgrade"
 # Unprivileged uids for nodes: one per node (derived from the grader's pid), so that the kernel's per-user process
 # limit counts only that node's processes, and nodes running side by side cannot signal each other.
@@ -400,9 +401,11 @@ def _shown_imports(cap: Capability, script: Path, workdir: Path, roots: Sequence
     return pairs
 
 
-def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int, imports: Sequence[Path] = ()) -> Plan:
+def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int, imports: Sequence[Path] = (),
+         files: Path | None = None) -> Plan:
     """How to start `command` (arguments to this interpreter, running `script`) confined; workdir is the node's
-    host folder; `imports` are folders of the workspace the node imports from, shown read-only beside its package.
+    host folder; `imports` are folders of the workspace the node imports from, shown read-only beside its package;
+    `files` is a folder of files the node is given, shown read-only at files_folder(files).
     Raises ConfineError rather than run the node as root."""
     cap = detect()
     notes = [cap.note] if cap.note else []
@@ -410,6 +413,8 @@ def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int, i
         shown = _shown_package(cap, script, workdir)
         staged = shown[1] if shown else None
         extra = _shown_imports(cap, script, workdir, imports)
+        if files is not None:
+            extra.append((str(files), FILES_DIR))
         uid = next_uid() if cap.root else None
         tmp_bytes = max(1, limits_file_mb) << 20
         if cap.bwrap:
@@ -443,6 +448,12 @@ def plan(command: list[str], script: Path, workdir: Path, limits_file_mb: int, i
         os.chown(workdir, uid, uid)
         return Plan(argv, cwd=str(workdir), home=str(workdir), uid=uid, notes=notes, isolation=cap.isolation)
     return Plan(argv, cwd=str(workdir), home=str(workdir), notes=notes, isolation=cap.isolation)
+
+
+def files_folder(files: Path) -> str:
+    """Where the node sees the folder of files it is given: a fixed path in its sandbox (the same every run, so that
+    a path it prints is too), the folder itself when it runs unconfined."""
+    return FILES_DIR if detect().namespaces else str(files)
 
 
 def remove_files_of(uid: int, folders: tuple[str, ...] = ("/dev/shm", "/tmp", "/var/tmp")) -> None:

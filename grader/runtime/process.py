@@ -16,7 +16,7 @@ from pathlib import Path
 
 from grader.runtime import confine
 from grader.nodelib import COMMON, precompile, pythonpath
-from grader.runtime.spec import Limits, NodeSpec
+from grader.runtime.spec import FILE_ARG, Limits, NodeSpec
 
 try:
     import resource
@@ -90,6 +90,28 @@ def _start_command(spec: NodeSpec, script: Path) -> list[str]:
     if entry is None:
         return [str(script)]
     return [str(ENTRY_LAUNCHER), str(entry.root), f"{entry.module}:{entry.function}", entry.executable]
+
+
+def _write_files(spec: NodeSpec, workdir: Path) -> Path | None:
+    """Write the files the node is given (NodeSpec.files) into a folder of its work folder, readable by any user."""
+    if not spec.files:
+        return None
+    folder = workdir / "files"
+    folder.mkdir(mode=0o755, exist_ok=True)
+    os.chmod(folder, 0o755)
+    for name, content in spec.files:
+        path = folder / name
+        path.write_bytes(content)
+        os.chmod(path, 0o644)
+    return folder
+
+
+def _with_file_paths(args: tuple[str, ...], files: Path | None) -> list[str]:
+    """The node's arguments with each file_arg(name) replaced by where the node sees that file."""
+    if files is None:
+        return list(args)
+    inside = confine.files_folder(files)
+    return [f"{inside}/{a[len(FILE_ARG):]}" if a.startswith(FILE_ARG) else a for a in args]
 
 
 def _own_process_count() -> int:
@@ -167,8 +189,9 @@ class NodeProcess:
         workdir.mkdir(parents=True, exist_ok=True)
         script = Path(os.path.abspath(spec.script))
         try:
-            self.plan = confine.plan(["-B", *_start_command(spec, script), *spec.args], script, workdir,
-                                     limits.file_mb, spec.import_roots)
+            files = _write_files(spec, workdir)
+            self.plan = confine.plan(["-B", *_start_command(spec, script), *_with_file_paths(spec.args, files)],
+                                     script, workdir, limits.file_mb, spec.import_roots, files)
         except confine.ConfineError as exc:
             raise ProcessError(str(exc)) from None
         except OSError as exc:

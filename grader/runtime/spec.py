@@ -40,6 +40,16 @@ class Limits:
                 raise ValueError(f"limit {name} must be positive (got {value!r})")
 
 
+# An argument that stands for one of NodeSpec.files until the node starts, then becomes that file's path. A NUL is in
+# no real argument, so nothing a student passes is taken for one.
+FILE_ARG = "\0file:"
+
+
+def file_arg(name: str) -> str:
+    """The argument that becomes the path of the node's file ``name`` (NodeSpec.files): ``--params-file`` takes it."""
+    return FILE_ARG + name
+
+
 @dataclass(frozen=True)
 class NodeSpec:
     """One node to run: a script, its arguments (remaps included, e.g. ``cmd_vel:=/x``), stdin and namespace."""
@@ -60,6 +70,21 @@ class NodeSpec:
     # Folders holding the Python packages its workspace's build installs (ament_python_install_package, setup.py's
     # packages): on the node's import path after the client library, shown read-only in its sandbox.
     import_roots: tuple[Path, ...] = ()
+    # Files handed to the node by content, (name, bytes): the parameter files launch_ros writes for a launch file's
+    # node. They are written read-only into a folder of the node's own (/tmp/rosgrade-files inside its sandbox, the
+    # same path every run), and each argument file_arg(name) becomes that file's path.
+    files: tuple[tuple[str, bytes], ...] = ()
+
+    def __post_init__(self) -> None:
+        names = [name for name, _content in self.files]
+        for name in names:
+            if not name or name in (".", "..") or "/" in name or "\0" in name:
+                raise ValueError(f"a node's file needs a plain file name, not {name!r}")
+        if len(set(names)) != len(names):
+            raise ValueError(f"a node's files need different names: {names}")
+        unknown = sorted({a[len(FILE_ARG):] for a in self.args if a.startswith(FILE_ARG)} - set(names))
+        if unknown:
+            raise ValueError(f"the node's arguments name files it is not given: {unknown}")
 
 
 @dataclass(frozen=True)
