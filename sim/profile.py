@@ -165,7 +165,8 @@ class ScanConfig(_Model):
     """A planar laser scanner: ``samples`` beams from ``angle_min`` to ``angle_max`` (inclusive) about the frame's z.
 
     ``mount`` is the scanner's position in the base frame. Beams that hit nothing between ``range_min`` and
-    ``range_max`` read +inf, as Gazebo's ray sensor reports them.
+    ``range_max`` read +inf, as Gazebo's ray sensor reports them. ``noise_stddev``: Gaussian noise (mean 0) on each
+    beam that hits, the reading then clamped to [range_min, range_max], as Gazebo applies its ``<noise>``.
     """
 
     topic: str
@@ -177,6 +178,7 @@ class ScanConfig(_Model):
     angle_max: float
     range_min: float = Field(ge=0)
     range_max: PositiveFloat
+    noise_stddev: float = Field(0.0, ge=0)
 
     @model_validator(mode="after")
     def _check(self) -> ScanConfig:

@@ -16,6 +16,12 @@ from sim.profile import ImuConfig, JointStatesConfig, ScanConfig
 from sim.samples import ImuSample, JointStateSample, ScanSample
 
 _OBSTACLES_ONLY = np.array([1 if group == OBSTACLE_GROUP else 0 for group in range(6)], dtype=np.uint8)
+_UINT64 = (1 << 64) - 1
+
+
+def noise(seed: int, t_ns: int, samples: int) -> np.ndarray:
+    """``samples`` standard normal draws for the sweep at ``t_ns`` of a run with ``seed`` (the same on every call)."""
+    return np.random.Generator(np.random.Philox(key=seed & _UINT64, counter=t_ns)).standard_normal(samples)
 
 
 class _Sensor:
@@ -88,10 +94,15 @@ class JointStates(_Sensor):
 
 
 class Scanner(_Sensor):
-    """A planar laser scanner mounted on the base; with no obstacles in the scenario every beam reads +inf."""
+    """A planar laser scanner mounted on the base; with no obstacles in the scenario every beam reads +inf.
 
-    def __init__(self, config: ScanConfig, robot: RobotModel, data: mujoco.MjData) -> None:
+    Its noise is a function of the scenario's seed and the sweep's time alone (a Philox stream keyed by the seed,
+    at the time as counter), so a sweep reads the same whether or not earlier sweeps were taken.
+    """
+
+    def __init__(self, config: ScanConfig, robot: RobotModel, data: mujoco.MjData, seed: int = 0) -> None:
         self._config = config
+        self._seed = seed & _UINT64
         self._topic = config.topic
         self._model, self._data = robot.model, data
         self._body = robot.base_body
@@ -107,7 +118,8 @@ class Scanner(_Sensor):
         self._empty = (math.inf,) * config.samples
 
     def sample(self, t_ns: int, qpos: Sequence[float], qvel: Sequence[float]) -> ScanSample:
-        """One sweep from the pose after the last step (the base body's frame in ``data``; ``qpos``/``qvel`` unused)."""
+        """One sweep from the pose after the last step (the base body's frame in ``data``; ``qpos``/``qvel`` unused),
+        with the profile's noise on every beam that hit."""
         c = self._config
         ranges = self._empty
         if self._has_obstacles:
@@ -122,6 +134,9 @@ class Scanner(_Sensor):
             np.greater_equal(self._geom, 0, out=hit)
             hit &= dist >= c.range_min
             hit &= dist <= c.range_max
+            if c.noise_stddev:
+                dist += c.noise_stddev * noise(self._seed, t_ns, c.samples)
+                np.clip(dist, c.range_min, c.range_max, out=dist)
             dist[~hit] = math.inf
             ranges = tuple(dist.tolist())
         return ScanSample(t_ns, c.topic, c.frame_id, c.angle_min, c.angle_max, self._increment, c.range_min,

@@ -168,7 +168,7 @@ class World(ScenarioTimes):
         if sensors.joint_states is not None:
             self._sensors.append((steps_per_tick(sensors.joint_states.rate_hz), JointStates(sensors.joint_states, robot)))
         if sensors.scan is not None:
-            self._sensors.append((steps_per_tick(sensors.scan.rate_hz), Scanner(sensors.scan, robot, self.data)))
+            self._sensors.append((steps_per_tick(sensors.scan.rate_hz), Scanner(sensors.scan, robot, self.data, scenario.seed)))
         self._output_periods = tuple(
             p for p in (self._odometry_every, self._tf_every, self._truth_every, *(p for p, _ in self._sensors))
             if p is not None
