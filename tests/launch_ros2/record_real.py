@@ -1,7 +1,8 @@
 """Record what real ROS 2 Jazzy launch starts for each case in cases/runs.json (run where real launch is installed).
 
-``python record_real.py`` under an interpreter that imports real launch, launch_ros and rclpy (Jazzy). It installs
-nothing and fetches nothing: the case package is laid out as colcon would install it in a temporary prefix, with
+``python record_real.py LAUNCH_SHARE`` under an interpreter that imports real launch, launch_xml, launch_yaml,
+launch_ros and rclpy (Jazzy); LAUNCH_SHARE is that install's share/launch folder (launch_xml reads its substitution
+grammar from there). It installs nothing and fetches nothing: the case package is laid out as colcon would install it in a temporary prefix, with
 stand-in executables, and each case runs through launch's own LaunchService as `ros2 launch` runs it. A handler on
 every process start records its argv and the parameter files it is handed; errors are what launch logs. Writes
 cases/real_records.json.
@@ -27,10 +28,12 @@ EXECUTABLES = {"course_pkg": ["mover", "square", "follower", "beacon_search", "f
                "rviz2": ["rviz2"]}
 
 
-def install(prefix: Path) -> None:
+def install(prefix: Path, launch_share: Path) -> None:
     """The case package and the world's packages as colcon would install them, with stand-in executables."""
     index = prefix / "share" / "ament_index" / "resource_index" / "packages"
     index.mkdir(parents=True)
+    (index / "launch").write_text("")
+    shutil.copytree(launch_share, prefix / "share" / "launch")
     for package, names in EXECUTABLES.items():
         (index / package).write_text("")
         share = prefix / "share" / package
@@ -81,7 +84,7 @@ def record(case: dict, prefix: Path) -> dict:
         logger.removeHandler(handler)
     errors = [m for m in logs if m.startswith("Caught exception in launch")]
     user = [m for m in logs if m in {"Turtlesim started, spawning turtle", "Spawn finished",
-                                     "square done, shutting down"} or m.startswith("mode is ")]
+                                     "square done, shutting down"} or m.startswith(("mode is ", "robot is "))]
     return {"processes": started, "error": errors[0] if errors else None, "logs": user}
 
 
@@ -93,10 +96,17 @@ def main() -> None:
         module.srv = types.SimpleNamespace(LoadNode=service, UnloadNode=service, ListNodes=service)
         sys.modules["composition_interfaces"] = module
         sys.modules["composition_interfaces.srv"] = module.srv
+    import launch.frontend
+    import launch_xml
+    import launch_yaml
+    import launch_ros  # noqa: F401  (exposes node, push-ros-namespace... to the XML and YAML parsers)
+
+    # From source trees the parsers' entry points are not registered: name them as their setup.py does.
+    launch.frontend.Parser.frontend_parsers = {"xml": launch_xml.Parser, "yaml": launch_yaml.Parser}
     out = {}
     with tempfile.TemporaryDirectory(prefix="rosgrade-real-launch-") as tmp:
         prefix = Path(tmp) / "install"
-        install(prefix)
+        install(prefix, Path(sys.argv[1]))
         os.environ["AMENT_PREFIX_PATH"] = str(prefix)
         os.environ.pop("ROSGRADE_MODEL", None)
         for case in json.loads((CASES / "runs.json").read_text()):

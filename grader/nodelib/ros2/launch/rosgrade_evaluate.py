@@ -113,8 +113,8 @@ class Recorder:
                     f" - {type(exc).__name__}: {exc}\n - InvalidFrontendLaunchFileError: The launch file may have a "
                     "syntax error, or its format is unknown").with_traceback(exc.__traceback__) from None
         else:
-            raise InvalidLaunchFileError(f"{os.path.basename(path)}: rosgrade reads ROS 2 launch files written in "
-                                         "Python (.launch.py) so far; XML and YAML ones are not read yet")
+            from launch.frontend import load_frontend
+            description = load_frontend(path)
         if not isinstance(description, LaunchDescription):
             raise InvalidLaunchFileError(f"generate_launch_description() of '{path}' returned "
                                          f"{type(description).__name__}, not a LaunchDescription")
