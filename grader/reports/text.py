@@ -1,6 +1,8 @@
 """Small text formatters shared by the console table, Markdown, HTML and platform outputs, so they all agree."""
 from __future__ import annotations
 
+from grader.metrics.run import TURTLE_POSE_TOPIC
+from grader.recording import Recording, RecordingError
 from grader.report import CriterionResult, SubmissionReport, TaskReport
 
 # Measured names end in their unit (radius_m, max_linear_mps); shown as "radius 0.497 m".
@@ -71,14 +73,27 @@ def percent(report: SubmissionReport) -> float:
 
 
 def foxglove_help(recording: str) -> list[str]:
-    """How to look at a recording in Foxglove, step by step."""
+    """How to look at a recording in Foxglove, step by step, with plot paths of the world the run had."""
     return [
         f"Open a recording in Foxglove: go to https://app.foxglove.dev (or the desktop app) → "
         f"Open local file → {recording}",
-        "Add a Plot panel with paths such as /odom.pose.pose.position.x, /odom.pose.pose.position.y "
-        "and /cmd_vel.linear.x (/cmd_vel.twist.linear.x for a ROS 2 TwistStamped); a Raw Messages panel on /rosout "
-        "shows your node's log.",
+        _plot_help(recording),
     ]
+
+
+def _plot_help(recording: str) -> str:
+    """The Plot panel's paths: turtle1's pose in a turtlesim recording (it has no /odom), else the robot's odometry."""
+    try:
+        topics = {info.topic for info in Recording.open(recording).topics()}
+    except RecordingError:
+        topics = set()
+    if TURTLE_POSE_TOPIC in topics:
+        return (f"Add a Plot panel with paths such as {TURTLE_POSE_TOPIC}.x, {TURTLE_POSE_TOPIC}.y and "
+                "/turtle1/cmd_vel.linear.x; the report's turtlesim picture shows what the pens drew, and a Raw Messages "
+                "panel on /rosout shows your node's log.")
+    return ("Add a Plot panel with paths such as /odom.pose.pose.position.x, /odom.pose.pose.position.y "
+            "and /cmd_vel.linear.x (/cmd_vel.twist.linear.x for a ROS 2 TwistStamped); a Raw Messages panel on /rosout "
+            "shows your node's log.")
 
 
 def watch_first(report: SubmissionReport) -> tuple[TaskReport, str] | None:

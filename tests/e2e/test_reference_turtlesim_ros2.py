@@ -65,3 +65,10 @@ def test_ros2_turtlesim_recording_repeats_bit_for_bit(report, tmp_path):
     again = grade_submission(PACKAGE / "turtlesim_tutorials" / "go_to_goal.py", tmp_path, ["turtle_goal"])
     second = Path(next(p for p in again.tasks[0].recordings if Path(p).stem == "nominal"))
     assert first.read_bytes() == second.read_bytes()
+
+
+def test_the_foxglove_hint_plots_the_turtles_pose_not_odom(report):
+    from grader.reports.text import foxglove_help
+
+    plot = foxglove_help(_task(report, "turtle_circle").recordings[0])[1]
+    assert "/turtle1/pose.x" in plot and "/odom" not in plot and "turtlesim picture" in plot
