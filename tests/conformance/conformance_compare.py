@@ -8,30 +8,18 @@ one clock step.
 """
 from __future__ import annotations
 
+import difflib
 import re
 from dataclasses import dataclass
+
+from tests.conformance_harness import mask_places, reference_time, without_library_internals
 
 CLOCK_STEP_S = 0.01
 TOLERANCE_S = CLOCK_STEP_S + 1e-6
 
-_REF = re.compile(r"^#REF (-?\d+\.\d+)$")
 _LOG = re.compile(r"^\[(DEBUG|INFO|WARN|ERROR|FATAL)\] \[(\d+\.\d+)(?:, (\d+\.\d+))?\]: ")
-_PROBE_PATH = re.compile(r"(?:[^\s'\"():]*/)?(p\d\d_[A-Za-z0-9_]+\.py)")
-_ADDR = re.compile(r"0x[0-9a-fA-F]{6,}")
 _ANON = re.compile(r"_\d{2,7}_\d{13}\b")
 _T = re.compile(r"\bt=(-?\d+\.\d+)")
-_FRAME = re.compile(r'^(\s*)File "([^"]+)", line \d+, in (.+)$')
-_CARET = re.compile(r"^\s*[\^~]+\s*$")
-_LIB_WARNING = re.compile(r"^(/\S+/)(\S+\.py):\d+: (\w+Warning): ")
-
-
-def reference_time(stdout: str) -> float | None:
-    """The probe's origin (absolute sim seconds), from its '#REF' line."""
-    for line in stdout.splitlines():
-        m = _REF.match(line)
-        if m:
-            return float(m.group(1))
-    return None
 
 
 @dataclass(frozen=True)
@@ -47,38 +35,10 @@ class Line:
         return out
 
 
-def _is_probe_file(path: str) -> bool:
-    return bool(re.search(r"(^|/)p\d\d_[A-Za-z0-9_]+\.py$", path))
-
-
 def normalise(text: str, ref: float | None) -> list[Line]:
     """Lines of one stream, masked and with sim times made relative to `ref`."""
     out: list[Line] = []
-    lines = text.splitlines()
-    i = 0
-    in_library = False
-    while i < len(lines):
-        line = lines[i]
-        i += 1
-        if _REF.match(line):
-            continue
-        frame = _FRAME.match(line)
-        if frame and not _is_probe_file(frame.group(2)):
-            # A library frame: skip it, its source line and its caret line; one marker for a run of them.
-            if i < len(lines) and lines[i].startswith(frame.group(1) + "  ") and not _FRAME.match(lines[i]):
-                i += 1
-                if i < len(lines) and _CARET.match(lines[i]):
-                    i += 1
-            if not in_library:
-                out.append(Line(f"{frame.group(1)}<library frames>", ()))
-            in_library = True
-            continue
-        in_library = False
-        warning = _LIB_WARNING.match(line)
-        if warning and not _is_probe_file(warning.group(1) + warning.group(2)):
-            line = f"<lib>/{warning.group(2).split('/')[-1]}:<line>: {warning.group(3)}: " + line[warning.end():]
-            if i < len(lines) and lines[i].startswith("  "):
-                i += 1  # the library source line the warning shows
+    for line in without_library_internals(text.splitlines()):
         times: list[float] = []
         log = _LOG.match(line)
         if log:
@@ -91,13 +51,10 @@ def normalise(text: str, ref: float | None) -> list[Line]:
                 head = f"[{level}] [<wall>, t=*]: "
                 times.append(float(sim) - ref if ref is not None else float(sim))
             line = head + line[log.end():]
-        line = _PROBE_PATH.sub(r"<probe>/\1", line)
-        line = _ADDR.sub("0xADDR", line)
-        line = _ANON.sub("_<PID>_<MS>", line)
+        line = _ANON.sub("_<PID>_<MS>", mask_places(line))
         for m in _T.finditer(line):
             times.append(float(m.group(1)))
-        line = _T.sub("t=*", line)
-        out.append(Line(line, tuple(times)))
+        out.append(Line(_T.sub("t=*", line), tuple(times)))
     return out
 
 
@@ -107,8 +64,6 @@ def diff_streams(name: str, expected: str, expected_ref: float | None, actual: s
     exp = normalise(expected, expected_ref)
     act = normalise(actual, actual_ref)
     problems: list[str] = []
-    import difflib
-
     matcher = difflib.SequenceMatcher(a=[x.template for x in exp], b=[x.template for x in act], autojunk=False)
     for op, a0, a1, b0, b1 in matcher.get_opcodes():
         if op == "equal":
@@ -133,7 +88,7 @@ def diff_commands(expected: list, expected_ref: float | None, actual: list, actu
     exp, act = rows(expected, expected_ref), rows(actual, actual_ref)
     problems = []
     key = lambda r: (r[1], r[2])  # noqa: E731
-    matcher = __import__("difflib").SequenceMatcher(a=[key(r) for r in exp], b=[key(r) for r in act], autojunk=False)
+    matcher = difflib.SequenceMatcher(a=[key(r) for r in exp], b=[key(r) for r in act], autojunk=False)
     for op, a0, a1, b0, b1 in matcher.get_opcodes():
         if op == "equal":
             for a, b in zip(exp[a0:a1], act[b0:b1]):

@@ -18,10 +18,13 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from conformance_compare import diff_commands, diff_streams, missing_lines, normalise, reference_time  # noqa: E402
+from conformance_compare import diff_commands, diff_streams, missing_lines, normalise  # noqa: E402
 from probe_cases import CASES, CASES_BY_ID, Case  # noqa: E402
 from real_ros import NOT_INSTALLED, RealRos, RealRosError, real_ros_available  # noqa: E402
 from rosgrade_side import run_ours  # noqa: E402
+
+from tests.conformance_harness import (OurRuns, RealRuns, behaves_as_measured, exit_code,  # noqa: E402
+                                       reference_time, same_as_real)
 
 pytestmark = pytest.mark.slow
 
@@ -32,96 +35,36 @@ pytestmark = pytest.mark.slow
 REAL_ATTEMPTS = 3
 
 
-class _RealCache:
-    """Runs each probe under real ROS when first needed (and again on request), in one shared master and sim."""
-
-    def __init__(self, tmp: Path) -> None:
-        self.tmp = tmp
-        self.ros: RealRos | None = None
-        self.results: dict[str, list] = {}
-
-    def runs(self, case: Case):
-        """The real runs of `case` so far, then one more each time the caller asks, up to REAL_ATTEMPTS."""
-        runs = self.results.setdefault(case.id, [])
-        for attempt in range(REAL_ATTEMPTS):
-            if attempt == len(runs):
-                runs.append(self._run(case))
-            yield runs[attempt]
-
-    def get(self, case: Case):
-        return next(self.runs(case))
-
-    def _run(self, case: Case):
-        if self.ros is None:
-            self.ros = RealRos(self.tmp / "realros").__enter__()
-        try:
-            return self.ros.run_probe(case.path, case.args, shutdown_at=case.shutdown_at,
-                                      duration=case.duration, ros_namespace=case.ros_namespace)
-        except RealRosError as exc:
-            pytest.fail(f"the real-ROS harness failed for {case.id}: {exc}")
-
-    def close(self) -> None:
-        if self.ros is not None:
-            self.ros.close()
+def _run_real(ros: RealRos, case: Case):
+    return ros.run_probe(case.path, case.args, shutdown_at=case.shutdown_at, duration=case.duration,
+                         ros_namespace=case.ros_namespace)
 
 
-class _OursCache:
-    """Runs each probe under rosgrade at most once."""
-
-    def __init__(self, tmp: Path) -> None:
-        self.tmp = tmp
-        self.results: dict[str, object] = {}
-
-    def get(self, case: Case):
-        if case.id not in self.results:
-            try:
-                self.results[case.id] = run_ours(case.path, case.args, shutdown_at=case.shutdown_at,
-                                                 duration=case.duration, ros_namespace=case.ros_namespace,
-                                                 workdir=self.tmp / case.id)
-            except Exception as exc:  # noqa: BLE001 - the runtime is under construction; report, do not crash
-                self.results[case.id] = exc
-        result = self.results[case.id]
-        if isinstance(result, Exception):
-            pytest.fail(f"rosgrade could not run {case.id}: {type(result).__name__}: {result}")
-        return result
+def _run_ours(case: Case, workdir: Path):
+    return run_ours(case.path, case.args, shutdown_at=case.shutdown_at, duration=case.duration,
+                    ros_namespace=case.ros_namespace, workdir=workdir)
 
 
 @pytest.fixture(scope="module")
 def real_outputs(tmp_path_factory: pytest.TempPathFactory):
+    """Real runs share one rosmaster and one sim (started with the first probe)."""
     if not real_ros_available():
         pytest.skip(NOT_INSTALLED)
-    cache = _RealCache(tmp_path_factory.mktemp("real"))
-    yield cache
-    cache.close()
+    runs = RealRuns(lambda: RealRos(tmp_path_factory.mktemp("real") / "realros").__enter__(), _run_real,
+                    RealRosError, REAL_ATTEMPTS)
+    yield runs
+    runs.close()
 
 
 @pytest.fixture(scope="module")
 def our_outputs(tmp_path_factory: pytest.TempPathFactory):
-    return _OursCache(tmp_path_factory.mktemp("ours"))
-
-
-def _exit_code(result) -> int | None:
-    """Exit code as subprocess reports it (negative: killed by that signal); None when the harness killed it."""
-    if getattr(result, "exit_signal", None):
-        return -result.exit_signal
-    return result.exit_code
-
-
-def _describe(side: str, result) -> str:
-    return (f"--- {side} stdout ---\n{result.stdout}--- {side} stderr ---\n{result.stderr}"
-            f"--- {side} exit code {_exit_code(result)}; {getattr(result, 'notes', '')}\n")
+    return OurRuns(tmp_path_factory.mktemp("ours"), _run_ours)
 
 
 @pytest.mark.realros
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
-def test_same_as_real_rospy(case: Case, real_outputs: _RealCache, our_outputs: _OursCache) -> None:
-    ours = our_outputs.get(case)
-    for real in real_outputs.runs(case):
-        problems = _differences(case, real, ours)
-        if not problems:
-            return
-    pytest.fail(f"{case.id}: {len(problems)} difference(s) from real rospy (in each of {REAL_ATTEMPTS} real runs; "
-                "the last shown):\n" + "\n".join(problems) + "\n\n" + _describe("real", real) + _describe("ours", ours))
+def test_same_as_real_rospy(case: Case, real_outputs: RealRuns, our_outputs: OurRuns) -> None:
+    same_as_real(case, real_outputs, our_outputs.get(case), _differences, "rospy")
 
 
 def _differences(case: Case, real, ours) -> list[str]:
@@ -129,8 +72,8 @@ def _differences(case: Case, real, ours) -> list[str]:
     problems = []
     problems += diff_streams("stdout", real.stdout, real_ref, ours.stdout, our_ref, case.tolerance_s)
     problems += diff_streams("stderr", real.stderr, real_ref, ours.stderr, our_ref, case.tolerance_s)
-    if _exit_code(real) != _exit_code(ours):
-        problems.append(f"exit code: real {_exit_code(real)}, ours {_exit_code(ours)}")
+    if exit_code(real) != exit_code(ours):
+        problems.append(f"exit code: real {exit_code(real)}, ours {exit_code(ours)}")
     if case.compare_commands:
         problems += diff_commands(real.commands, real_ref, ours.commands, our_ref, case.tolerance_s)
     return problems
@@ -142,8 +85,8 @@ def _check_reference(case: Case, result) -> list[str]:
     problems += [f"stderr lacks (in order): {line!r}" for line in missing_lines(list(case.stderr), result.stderr, ref)]
     if case.stderr_empty and result.stderr.strip():
         problems.append(f"stderr should be empty, got: {[x.render() for x in normalise(result.stderr, ref)]}")
-    if _exit_code(result) != case.exit_code:
-        problems.append(f"exit code {_exit_code(result)}, expected {case.exit_code}")
+    if exit_code(result) != case.exit_code:
+        problems.append(f"exit code {exit_code(result)}, expected {case.exit_code}")
     return problems
 
 
@@ -154,14 +97,10 @@ def test_reference_behaviour(case: Case, side: str, request: pytest.FixtureReque
         results = [request.getfixturevalue("our_outputs").get(case)]
     else:
         results = request.getfixturevalue("real_outputs").runs(case)
-    for result in results:
-        problems = _check_reference(case, result)
-        if not problems:
-            return
-    pytest.fail(f"{case.id} ({side}):\n" + "\n".join(problems) + "\n\n" + _describe(side, result))
+    behaves_as_measured(case, side, results, _check_reference)
 
 
-def test_p10_command_stream_ours(our_outputs: _OursCache) -> None:
+def test_p10_command_stream_ours(our_outputs: OurRuns) -> None:
     """The robot receives the 10 Hz stream: iterations 1 and 2 at the same time, then 0.1 s apart (reference (a))."""
     case = next(c for c in CASES if c.id == "p10_publisher")
     result = our_outputs.get(case)
@@ -172,7 +111,7 @@ def test_p10_command_stream_ours(our_outputs: _OursCache) -> None:
         assert received.get(i) == pytest.approx(0.1 * (i - 2), abs=0.0101), (i, received)
 
 
-def test_p03_last_command_is_zero_ours(our_outputs: _OursCache) -> None:
+def test_p03_last_command_is_zero_ours(our_outputs: OurRuns) -> None:
     """The zero Twist published in an on_shutdown hook reaches the robot (reference (b): delivered 15/15)."""
     case = next(c for c in CASES if c.id == "p03_shutdown_uncaught")
     result = our_outputs.get(case)
@@ -182,7 +121,7 @@ def test_p03_last_command_is_zero_ours(our_outputs: _OursCache) -> None:
 
 
 @pytest.mark.parametrize("mode, connect_s", [("busy", 0.1), ("sleep", 0.05)])
-def test_p33_busy_connect_ours(our_outputs: _OursCache, mode: str, connect_s: float) -> None:
+def test_p33_busy_connect_ours(our_outputs: OurRuns, mode: str, connect_s: float) -> None:
     """A publisher connects 0.1 s after it registered while the node busy-loops then, 50 ms while it sleeps
     (session.BUSY_CONNECT_DELAY_NS, CONNECT_DELAY_NS); the command published once connected reaches the robot then."""
     result = our_outputs.get(CASES_BY_ID[f"p33_busy_connect_{mode}"])

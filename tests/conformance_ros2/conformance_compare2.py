@@ -14,14 +14,10 @@ import re
 from collections.abc import Iterable, Sequence
 from typing import Protocol
 
+from tests.conformance_harness import mask_places, without_library_internals
+
 _ANSI = re.compile(r"\x1b\[[0-9;]*m")
 _LOG = re.compile(r"^\[(DEBUG|INFO|WARN|ERROR|FATAL)\] \[\d+\.\d+\] \[")
-_PROBE_PATH = re.compile(r"(?:[^\s'\"():,]*/)?(p\d\d_[A-Za-z0-9_]+\.py)")
-_ADDR = re.compile(r"0x[0-9a-fA-F]{6,}")
-_REF = re.compile(r"^#REF (-?\d+\.\d+)\s*$")
-_FRAME = re.compile(r'^(\s*)File "([^"]+)", line \d+, in (.+)$')
-_CARET = re.compile(r"^\s*[\^~]+\s*$")
-_LIB_WARNING = re.compile(r"^(/\S+/)(\S+\.py):\d+: (\w+Warning): ")
 GRID_TOLERANCE_S = 0.0101  # one /clock step: the robot stamps a command with the last tick it published
 
 
@@ -31,56 +27,17 @@ class CommandLike(Protocol):
     angular: tuple[float, float, float]
 
 
-def reference_time(stdout: str) -> float | None:
-    """The probe's origin (absolute sim seconds), from its '#REF' line."""
-    for line in stdout.splitlines():
-        m = _REF.match(line)
-        if m:
-            return float(m.group(1))
-    return None
-
-
-def _is_probe_file(path: str) -> bool:
-    return bool(re.search(r"(^|/)p\d\d_[A-Za-z0-9_]+\.py$", path))
-
-
 def normalise(text: str, volatile: Sequence[str] = ()) -> list[str]:
     """The lines of one stream with everything that legitimately differs masked, volatile lines dropped."""
     drop = [re.compile(p) for p in volatile]
     out: list[str] = []
-    lines = _ANSI.sub("", text).splitlines()
-    i = 0
-    in_library = False
-    while i < len(lines):
-        line = lines[i]
-        i += 1
-        if _REF.match(line):
-            continue
-        frame = _FRAME.match(line)
-        if frame and not _is_probe_file(frame.group(2)):
-            # A library frame: skip its source line and caret line too; one marker for a run of them.
-            if i < len(lines) and lines[i].startswith(frame.group(1) + "  ") and not _FRAME.match(lines[i]):
-                i += 1
-                if i < len(lines) and _CARET.match(lines[i]):
-                    i += 1
-            if not in_library:
-                out.append(f"{frame.group(1)}<library frames>")
-            in_library = True
-            continue
-        in_library = False
-        warning = _LIB_WARNING.match(line)
-        if warning and not _is_probe_file(warning.group(1) + warning.group(2)):
-            line = f"<lib>/{warning.group(2).split('/')[-1]}:<line>: {warning.group(3)}: " + line[warning.end():]
-            if i < len(lines) and lines[i].startswith("  "):
-                i += 1  # the library source line the warning shows
+    for line in without_library_internals(_ANSI.sub("", text).splitlines()):
         log = _LOG.match(line)
         if log:
             line = f"[{log.group(1)}] [<wall>] [" + line[log.end():]
-        line = _PROBE_PATH.sub(r"<probe>/\1", line)
-        line = _ADDR.sub("0xADDR", line)
-        if any(p.search(line) for p in drop):
-            continue
-        out.append(line)
+        line = mask_places(line)
+        if not any(p.search(line) for p in drop):
+            out.append(line)
     return out
 
 

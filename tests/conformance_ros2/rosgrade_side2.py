@@ -7,7 +7,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from conformance_compare2 import reference_time
+from tests.conformance_harness import reference_time
 
 START_TIME_S = 2.0
 ROBOT = "turtlebot3_waffle"  # the world's TurtleBot3; its ROS 2 mode (TwistStamped on /cmd_vel) comes with the lead's wiring

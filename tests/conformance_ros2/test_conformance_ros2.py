@@ -14,7 +14,6 @@ runs on wall time, and a Ctrl+C can race rclpy's own signal thread.
 from __future__ import annotations
 
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -28,6 +27,8 @@ from probe_cases2 import CASES, Case  # noqa: E402
 from real_ros2 import RealRos2, RealRos2Error, unavailable_reason  # noqa: E402
 from rosgrade_side2 import run_ours  # noqa: E402
 
+from tests.conformance_harness import OurRuns, RealRuns, behaves_as_measured, exit_code, same_as_real  # noqa: E402
+
 pytestmark = pytest.mark.slow
 REAL_ATTEMPTS = 5
 # A pause before each re-run, so that a passing slowdown of the machine does not hit every attempt. The session's first
@@ -37,93 +38,40 @@ RETRY_PAUSE_S = 2.0
 IDS = [c.id for c in CASES]
 
 
-class _RealCache:
-    """Runs each probe under real rclpy when first needed (and again on request), beside one shared robot."""
-
-    def __init__(self, tmp: Path) -> None:
-        self.tmp = tmp
-        self.ros: RealRos2 | None = None
-        self.results: dict[str, list] = {}
-
-    def runs(self, case: Case):
-        """The real runs of `case` so far, then one more each time the caller asks, up to REAL_ATTEMPTS."""
-        runs = self.results.setdefault(case.id, [])
-        for attempt in range(REAL_ATTEMPTS):
-            if attempt == len(runs):
-                if attempt:
-                    time.sleep(RETRY_PAUSE_S)
-                runs.append(self._run(case))
-            yield runs[attempt]
-
-    def _run(self, case: Case):
-        try:
-            if self.ros is None:
-                self.ros = RealRos2(self.tmp / "realros2").__enter__()
-            return self.ros.run_probe(case.path, case.args, shutdown_at=case.shutdown_at, duration=case.duration)
-        except RealRos2Error as exc:
-            pytest.fail(f"the real-ROS 2 harness failed for {case.id}: {exc}")
-
-    def close(self) -> None:
-        if self.ros is not None:
-            self.ros.close()
+def _run_real(ros: RealRos2, case: Case):
+    return ros.run_probe(case.path, case.args, shutdown_at=case.shutdown_at, duration=case.duration)
 
 
-class _OursCache:
-    """Runs each probe under rosgrade at most once."""
-
-    def __init__(self, tmp: Path) -> None:
-        self.tmp = tmp
-        self.results: dict[str, object] = {}
-
-    def get(self, case: Case):
-        if case.id not in self.results:
-            try:
-                self.results[case.id] = run_ours(case.path, case.args, shutdown_at=case.shutdown_at,
-                                                 duration=case.duration, workdir=self.tmp / case.id)
-            except Exception as exc:  # noqa: BLE001 - report any failure of our side as this case's failure
-                self.results[case.id] = exc
-        result = self.results[case.id]
-        if isinstance(result, Exception):
-            pytest.fail(f"rosgrade could not run {case.id}: {type(result).__name__}: {result}")
-        return result
+def _run_ours(case: Case, workdir: Path):
+    return run_ours(case.path, case.args, shutdown_at=case.shutdown_at, duration=case.duration, workdir=workdir)
 
 
 @pytest.fixture(scope="module")
 def real_outputs(tmp_path_factory: pytest.TempPathFactory):
+    """Real runs share one robot (started with the first probe)."""
     reason = unavailable_reason()
     if reason:
         pytest.skip(reason)
-    cache = _RealCache(tmp_path_factory.mktemp("real2"))
-    yield cache
-    cache.close()
+    runs = RealRuns(lambda: RealRos2(tmp_path_factory.mktemp("real2") / "realros2").__enter__(), _run_real,
+                    RealRos2Error, REAL_ATTEMPTS, RETRY_PAUSE_S)
+    yield runs
+    runs.close()
 
 
 @pytest.fixture(scope="module")
 def our_outputs(tmp_path_factory: pytest.TempPathFactory):
-    return _OursCache(tmp_path_factory.mktemp("ours2"))
-
-
-def _exit_code(result) -> int | None:
-    """Exit status as subprocess reports it (negative: killed by that signal); None when the harness killed it."""
-    if getattr(result, "exit_signal", None):
-        return -result.exit_signal
-    return result.exit_code
+    return OurRuns(tmp_path_factory.mktemp("ours2"), _run_ours)
 
 
 def _commands(case: Case, result) -> list[str]:
     return summarise_commands(result.commands, result.sigint_s, case.markers)
 
 
-def _describe(side: str, result) -> str:
-    return (f"--- {side} stdout ---\n{result.stdout}--- {side} stderr ---\n{result.stderr}"
-            f"--- {side} exit {_exit_code(result)}; Ctrl+C at {result.sigint_s}; {result.notes}\n")
-
-
 def _differences(case: Case, real, ours) -> list[str]:
     problems = diff_lines("stdout", normalise(real.stdout, case.volatile), normalise(ours.stdout, case.volatile))
     problems += diff_lines("stderr", normalise(real.stderr, case.volatile), normalise(ours.stderr, case.volatile))
-    if _exit_code(real) != _exit_code(ours):
-        problems.append(f"exit status: real {_exit_code(real)}, ours {_exit_code(ours)}")
+    if exit_code(real) != exit_code(ours):
+        problems.append(f"exit status: real {exit_code(real)}, ours {exit_code(ours)}")
     if case.commands is not None:
         problems += diff_lines("/cmd_vel", _commands(case, real), _commands(case, ours))
     return problems
@@ -135,8 +83,8 @@ def _check_reference(case: Case, result) -> list[str]:
     problems += [f"stderr lacks (in order): {line!r}" for line in missing_lines(case.stderr, err)]
     if case.stderr_empty and err:
         problems.append(f"stderr should be empty, got: {err}")
-    if _exit_code(result) != case.exit_code:
-        problems.append(f"exit status {_exit_code(result)}, expected {case.exit_code}")
+    if exit_code(result) != case.exit_code:
+        problems.append(f"exit status {exit_code(result)}, expected {case.exit_code}")
     if case.shutdown_at is not None and (result.sigint_s is None or abs(result.sigint_s - case.shutdown_at) > 0.0101):
         problems.append(f"Ctrl+C at {result.sigint_s} s after the origin, asked for {case.shutdown_at} s")
     if case.commands is not None:
@@ -146,20 +94,8 @@ def _check_reference(case: Case, result) -> list[str]:
 
 @pytest.mark.realros
 @pytest.mark.parametrize("case", CASES, ids=IDS)
-def test_same_as_real_rclpy(case: Case, real_outputs: _RealCache, our_outputs: _OursCache) -> None:
-    ours = our_outputs.get(case)
-    compared = 0
-    for real in real_outputs.runs(case):
-        if case.real_may_hang and _exit_code(real) is None:
-            continue
-        compared += 1
-        problems = _differences(case, real, ours)
-        if not problems:
-            return
-    if not compared:
-        pytest.skip(f"{case.id}: every real run hung and was killed ({case.real_may_hang})")
-    pytest.fail(f"{case.id}: {len(problems)} difference(s) from real rclpy (in each of {REAL_ATTEMPTS} real runs; "
-                "the last shown):\n" + "\n".join(problems) + "\n\n" + _describe("real", real) + _describe("ours", ours))
+def test_same_as_real_rclpy(case: Case, real_outputs: RealRuns, our_outputs: OurRuns) -> None:
+    same_as_real(case, real_outputs, our_outputs.get(case), _differences, "rclpy")
 
 
 @pytest.mark.parametrize("side", [pytest.param("real", marks=pytest.mark.realros), "ours"])
@@ -169,20 +105,10 @@ def test_reference_behaviour(case: Case, side: str, request: pytest.FixtureReque
         results = [request.getfixturevalue("our_outputs").get(case)]
     else:
         results = request.getfixturevalue("real_outputs").runs(case)
-    checked = 0
-    for result in results:
-        if side == "real" and case.real_may_hang and _exit_code(result) is None:
-            continue
-        checked += 1
-        problems = _check_reference(case, result)
-        if not problems:
-            return
-    if not checked:
-        pytest.skip(f"{case.id}: every real run hung and was killed ({case.real_may_hang})")
-    pytest.fail(f"{case.id} ({side}):\n" + "\n".join(problems) + "\n\n" + _describe(side, result))
+    behaves_as_measured(case, side, results, _check_reference)
 
 
-def test_p20_startup_ours(our_outputs: _OursCache) -> None:
+def test_p20_startup_ours(our_outputs: OurRuns) -> None:
     """rclpy.init returns 0.35 s after the process started and discovery takes 0.1 s more (rclpy.context.STARTUP_NS,
     wire.DISCOVERY_NS): the first /clock, and so the first tick, comes 0.45 s after the start, and its message
     reaches the robot then."""
