@@ -1,6 +1,7 @@
 """The ``--ros-args`` command line as rcl reads it: parameter files and ``-p`` values, remaps, log levels."""
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from rosgrade_param_files import ParamFileError, ParamSet
@@ -23,6 +24,9 @@ class RCLInvalidROSArgsError(RCLError):
 _GLOBAL = "failed to initialize rcl: "
 _LOCAL = "Failed to parse ROS arguments: "
 _ARGUMENTS_C = "/project/src/rcl/arguments.c"
+_LEXER_C = "/project/src/rcl/lexer_lookahead.c"
+# rcl's lexeme kinds (rcl/lexer.h), as its errors number them.
+_NONE, _EOF, _COLON, _SEPARATOR, _TOKEN, _SLASH, _WILD_ONE, _WILD_MULTI, _DOT = 0, 1, 5, 8, 18, 19, 20, 21, 22
 # What rcl calls each flag's value in its refusal, and where it words it.
 _KINDS = {"-p": ("parameter override rule", 352), "--param": ("parameter override rule", 352),
           "--params-file": ("params file", 415), "-r": ("remap rule", 380), "--remap": ("remap rule", 380),
@@ -62,6 +66,73 @@ def _node_scoped(rule: str) -> tuple[str, str, str] | None:
     return (node if colon else "", name, rhs)
 
 
+class _Lexemes:
+    """rcl's lexer over a ``-p`` rule, two lexemes ahead: (kind, text) from ``index`` on."""
+
+    # rcl's lexer (rcl/src/rcl/lexer.c) as one pattern, longest lexeme first; a token has no '__' in it.
+    _PATTERN = re.compile(r"(:=)|(:)|(\.)|(/)|(\*\*)|(\*)|(__(?:node|name))|(__ns)|(~/)|(rosservice://)|"
+                          r"(rostopic://)|\\([1-9])|((?:[A-Za-z]|_(?!_))(?:[A-Za-z0-9]|_(?!_))*_?)")
+    _KINDS = (_SEPARATOR, _COLON, _DOT, _SLASH, _WILD_MULTI, _WILD_ONE, 6, 7, 2, 3, 4, 9, _TOKEN)
+
+    def __init__(self, text: str) -> None:
+        self.text, self.index = text, 0
+
+    def peek(self, ahead: int = 0) -> tuple[int, str]:
+        at = self.index
+        for _ in range(ahead + 1):
+            if at >= len(self.text):
+                return _EOF, ""
+            m = self._PATTERN.match(self.text, at)
+            if m is None:
+                return _NONE, ""
+            kind, at = self._KINDS[m.lastindex - 1], m.end()
+            if m.lastindex == 12:  # a back-reference \1 .. \9: kinds 9 .. 17
+                kind += int(m.group(12)) - 1
+        return kind, m.group()
+
+    def accept(self) -> str:
+        text = self.peek()[1]
+        self.index += len(text)
+        return text
+
+    def expect(self, kind: int) -> None:
+        got = self.peek()[0]
+        if got in (_NONE, _EOF):
+            raise ParamFileError(f"Expected lexeme type ({kind}) not found, search ended at index {self.index}",
+                                 f"{_LEXER_C}:239")
+        if got != kind:
+            raise ParamFileError(f"Expected lexeme type {kind}, got {got} at index {self.index}", f"{_LEXER_C}:244")
+        self.accept()
+
+    def name_token(self) -> None:
+        """A parameter name's part: tokens and slashes (rcl has no wildcards in parameter names)."""
+        kind = self.peek()[0]
+        if kind not in (_TOKEN, _SLASH):
+            problem, line = {_WILD_ONE: ("Wildcard '*' is not implemented", 1319),
+                             _WILD_MULTI: ("Wildcard '**' is not implemented", 1322)}.get(
+                kind, ("Expecting token or wildcard", 1325))
+            raise ParamFileError(problem, f"{_ARGUMENTS_C}:{line}")
+        while self.peek()[0] in (_TOKEN, _SLASH):
+            self.accept()
+
+
+def _param_rule(rule: str) -> tuple[str, str, str]:
+    """A ``-p`` rule as rcl reads it: (node, or '/**' for every node; name; the YAML text of its value)."""
+    lexemes = _Lexemes(rule)
+    node = "/**"
+    if lexemes.peek()[0] == _TOKEN and lexemes.peek(1)[0] == _COLON:
+        node = lexemes.accept()
+        lexemes.accept()
+    start = lexemes.index
+    lexemes.name_token()
+    while lexemes.peek()[0] != _SEPARATOR:
+        lexemes.expect(_DOT)
+        lexemes.name_token()
+    name = rule[start:lexemes.index]
+    lexemes.expect(_SEPARATOR)
+    return node, name, rule[lexemes.index:]
+
+
 def parse(argv: list[str], *, node_args: bool = False) -> RosArgs:
     """Split ``argv`` into ROS arguments (after ``--ros-args``, up to ``--``) and the rest, reading parameter files
     and ``-p`` values in order. A refused argument raises what rclpy raises: RCLError at rclpy.init, and
@@ -99,11 +170,7 @@ def parse(argv: list[str], *, node_args: bool = False) -> RosArgs:
 def _apply(out: RosArgs, flag: str, value: str) -> None:
     """Take one flag's value into ``out``; ParamFileError with rcl's inner text when rcl would refuse it."""
     if flag in ("-p", "--param"):
-        rule = _node_scoped(value)
-        if rule is None:
-            raise ParamFileError(f"Couldn't parse rule '{value}'", None)
-        node, name, text = rule
-        out.overrides.set_value(node or "/**", name, text)
+        out.overrides.set_value(*_param_rule(value))
     elif flag == "--params-file":
         out.overrides.read_file(value)
     elif flag in ("-r", "--remap"):
