@@ -521,6 +521,25 @@ def _launch_target(args: argparse.Namespace) -> tuple[Path, dict[str, Path], dic
     return found[0], packages, values
 
 
+def _is_ros2_launch(args: argparse.Namespace) -> bool:
+    """Whether `rosgrade launch` was given a ROS 2 launch file (`PATH` or `PKG FILE`)."""
+    from grader.launch import ros2_cli
+    from grader.workspace import WorkspaceError, read_workspace
+
+    if args.file.is_file():
+        return ros2_cli.is_ros2_file(args.file, ros2_cli.build_type_of(args.file))
+    if not args.args or ":=" in args.args[0]:
+        return False
+    name = Path(args.args[0])
+    if name.name.endswith(ros2_cli.ROS2_SUFFIXES):
+        return True
+    try:
+        package = read_workspace(args.workspace or Path.cwd()).package(str(args.file))
+    except WorkspaceError:
+        return False
+    return package is not None and package.build_type != "catkin"
+
+
 def _ros2_launch(args: argparse.Namespace) -> int:
     """`rosgrade launch` on a ROS 2 launch file: `PATH args...` or `PKG FILE args...` (installed files only)."""
     from grader.launch import ros2_cli
@@ -553,7 +572,7 @@ def cmd_launch(args: argparse.Namespace) -> int:
     from grader.launch import LaunchError, dump_params, node_names, read_launch
     from grader.launch import ros2_cli
 
-    if ros2_cli.is_ros2_file(str(args.args[0] if args.args and ":=" not in args.args[0] else args.file)):
+    if _is_ros2_launch(args):
         return _ros2_launch(args)
     if args.json or args.show_args:
         raise CliError("--json and --show-args are for ROS 2 launch files (.launch.py); for roslaunch XML use "

@@ -3,19 +3,39 @@ its processes (--nodes), its arguments (--show-args, as `ros2 launch --show-args
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from typing import Any
 
 from grader.launch.ros2_eval import Evaluation, Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed, workspace_for
 from grader.workspace import WorkspaceError, read_workspace
+from grader.workspace.model import Workspace, enclosing_folder, read_package
 
-ROS2_SUFFIXES = (".launch.py", ".py", ".launch.yaml", ".launch.yml", ".yaml")
+ROS2_SUFFIXES = (".py", ".yaml", ".yml")
+MAX_SNIFF_BYTES = 1 << 16
 
 
-def is_ros2_file(name: str) -> bool:
-    """Whether a launch file's name says ROS 2 (Python or YAML; XML is read as roslaunch XML)."""
-    return name.endswith(ROS2_SUFFIXES)
+def is_ros2_file(path: Path, package_build_type: str | None = None) -> bool:
+    """Whether a launch file is for `ros2 launch`: Python or YAML; XML when its package is an ament one, or (no
+    package) when its nodes are written with ROS 2's exec= rather than roslaunch's type=."""
+    if path.name.endswith(ROS2_SUFFIXES):
+        return True
+    if package_build_type is not None:
+        return package_build_type != "catkin"
+    try:
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            head = handle.read(MAX_SNIFF_BYTES)
+    except OSError:
+        return path.name.endswith(".launch.xml")
+    return " exec=" in head or "\texec=" in head or "\nexec=" in head
+
+
+def build_type_of(path: Path) -> str | None:
+    """The build type of the package a file is in (None: in no package)."""
+    folder = enclosing_folder(path.resolve())
+    package = read_package(folder) if folder is not None else None
+    return package.build_type if package is not None else None
 
 
 def find_installed(workspace_dir: Path, package: str, file_name: str) -> Path:
@@ -86,6 +106,25 @@ def args_text(arguments: list[dict[str, Any]]) -> str:
     return text
 
 
+def _hint(message: str, workspace: Workspace) -> str:
+    """One line of what to change, for the mistakes students make most."""
+    if match := re.search(r"package '([^']+)' not found", message):
+        names = ", ".join(sorted(workspace.folders)) or "none"
+        return (f"No package.xml in the submission says <name>{match[1]}</name> (its packages: {names}); turtlesim "
+                "is the grader's, and simulators and tools (rviz2, gazebo, nav2) are listed but never run.")
+    if match := re.search(r"executable '([^']+)' not found on the libexec directory '[^']*/lib/([^/']+)'", message):
+        package = workspace.package(match[2])
+        built = ", ".join(sorted(e.name for e in package.executables)) if package else ""
+        return (f"The build of {match[2]} installs: {built or 'no executables'} (console_scripts in setup.py, or "
+                "install(PROGRAMS ...)/install(TARGETS ...) in CMakeLists.txt); exec= names one of those.")
+    if match := re.search(r"launch configuration '([^']+)' does not exist", message):
+        return (f"Declare it before it is used: DeclareLaunchArgument('{match[1]}', default_value=...) in Python, "
+                f'<arg name="{match[1]}" default="..."/> in XML.')
+    if match := re.search(r"missing required argument '([^']+)'", message):
+        return f"Give it a value: {match[1]}:=VALUE after the launch file (or a default_value in the file)."
+    return ""
+
+
 def run(file: Path, workspace_dir: Path | None, values: dict[str, str], mode: str) -> tuple[str, list[str]]:
     """What `rosgrade launch` prints for a ROS 2 launch file, and notes for stderr; Ros2LaunchError on failure."""
     try:
@@ -99,7 +138,8 @@ def run(file: Path, workspace_dir: Path | None, values: dict[str, str], mode: st
     error = result.get("error")
     if error:
         where = f"\n  at {error['where']}" if error.get("where") else ""
-        raise Ros2LaunchError(f"[ERROR] [launch]: {error['message']}{where}")
+        hint = _hint(error["message"], workspace)
+        raise Ros2LaunchError(f"[ERROR] [launch]: {error['message']}{where}" + (f"\n  {hint}" if hint else ""))
     declared = {a["name"] for a in result.get("arguments", [])}
     notes = [f"argument {name}:={value} is not declared by the launch file (ros2 launch accepts it silently; it "
              "changes nothing unless a LaunchConfiguration reads it)" for name, value in values.items()
