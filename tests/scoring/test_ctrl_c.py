@@ -184,7 +184,8 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     assert every == {(t, c) for t, c, _ in CRITERIA} | shutdown
     assert {c for _, c in shutdown} == {"shutdown_stop"}
     assert set(RUBRICS) - set(DRIVING_TASKS) == {  # compared on their own below
-        "add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci", "fibonacci_client"}
+        "add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci", "fibonacci_client",
+        "explore_forward"}
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:
@@ -389,5 +390,41 @@ def _fibonacci_client(ctrl_c: bool) -> dict[str, RunData]:
 def test_ctrl_c_after_the_result_changes_no_action_client_credit(criterion: str) -> None:
     plain, interrupted = (next(c for c in score_task(RUBRICS["fibonacci_client"], _fibonacci_client(ctrl_c))
                                .criteria if c.id == criterion) for ctrl_c in (False, True))
+    assert plain.score == plain.max_score, plain.feedback
+    assert interrupted.score == plain.score, interrupted.feedback
+
+
+def _explore_forward(ctrl_c: bool) -> dict[str, RunData]:
+    """A correct ExploreForward server: to the wall at 0.2 m/s until /scan reads 0.5 m, SUCCEEDED with the distances;
+    the cancelled goal driven at 0.1 m/s for 3 s, then at rest and CANCELED. With Ctrl+C at the end, the robot drives
+    on after it and a goal sent then is never accepted."""
+    rubric = RUBRICS["explore_forward"]
+    runs = {}
+    for s in rubric.scenarios:
+        t0, end = s.start_time, s.duration
+        x, y, yaw = _start(rubric.robot, s)
+        goal = dict(s.action_goals[0].goal)
+        if s.name == "to_the_wall":
+            free = scan_ahead(_in_world(rubric.robot, s, run([])), x, y, yaw)
+            segs = [(1.0, 0.0, 0.0), ((free - 0.5) / 0.2, 0.2, 0.0)]
+            goals = [ActionGoal(t0 + 1.0, "/explore_forward", goal, True, tuple(t0 + 1.0 + 0.1 * k for k in range(90)),
+                                (2, 4), 4, {"total_distance_travelled": free - 0.5, "closest_obstacle": 0.5})]
+        else:
+            segs = [(1.0, 0.0, 0.0), (3.0, 0.1, 0.0)]
+            goals = [ActionGoal(t0 + 1.0, "/explore_forward", goal, True, tuple(t0 + 1.0 + 0.1 * k for k in range(30)),
+                                (2, 3, 5), 5, {"total_distance_travelled": 0.3, "closest_obstacle": 3.5}, t0 + 4.0, 0)]
+        segs = _rest_until(segs, end)
+        late = [ActionGoal(t0 + end + 0.5, "/explore_forward", goal)] if ctrl_c else []
+        motion = AFTER["drives"][0] if ctrl_c else []
+        data = run(segs + motion, x0=x, y0=y, yaw0=yaw, t0=t0,
+                   info=RunInfo(shutdown_requested_s=t0 + end if ctrl_c else None), shutdown_at=end if ctrl_c else None)
+        runs[s.name] = _in_world(rubric.robot, s, replace(data, action_goals=tuple(goals + late)))
+    return runs
+
+
+@pytest.mark.parametrize("criterion", [c.id for c in RUBRICS["explore_forward"].criteria])
+def test_ctrl_c_after_the_goals_changes_no_explore_forward_credit(criterion: str) -> None:
+    plain, interrupted = (next(c for c in score_task(RUBRICS["explore_forward"], _explore_forward(ctrl_c)).criteria
+                               if c.id == criterion) for ctrl_c in (False, True))
     assert plain.score == plain.max_score, plain.feedback
     assert interrupted.score == plain.score, interrupted.feedback

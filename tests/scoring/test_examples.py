@@ -37,7 +37,7 @@ def _reference_scripts(task: str) -> list[Path]:
 ROS2_TASKS = {"add_two_ints": "py_srvcli", "fibonacci": "py_action", "fibonacci_client": "py_action"}
 # ROS 2-only tasks whose reference is a COM2009 ament_cmake package: scripts/ installed by install(PROGRAMS).
 ROS2_CMAKE_TASKS = {"param_circle": "part3_beyond_basics", "number_game": "part4_services",
-                    "number_game_client": "part4_services"}
+                    "number_game_client": "part4_services", "explore_forward": "part5_actions"}
 
 
 @pytest.mark.parametrize("task", sorted(RUBRICS))
