@@ -153,6 +153,8 @@ class ParamSet:
         try:
             with open(path, "rb") as f:
                 data = f.read()
+        except IsADirectoryError:  # C's fopen opens a folder; libyaml fails on its first read
+            raise _fail("Error parsing a event near line 0", 782) from None
         except (OSError, ValueError):
             raise _fail("Error opening YAML file", 271, _PARSER_C) from None
         self.read_text(data)

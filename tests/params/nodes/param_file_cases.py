@@ -122,6 +122,14 @@ CASES = [
     {"id": "alias", "files": ["/**:\n  ros__parameters:\n    a: &x 1\n    b: *x\n"], "args": PF},
     {"id": "two_documents", "files": ["/**:\n  ros__parameters:\n    a: 1\n---\n/talker:\n  ros__parameters:\n"
                                       "    b: 2\n"], "args": PF},
+    {"id": "tags", "files": ["/**:\n  ros__parameters:\n    bin: !!binary aGVsbG8=\n    b: !!bool yes\n"
+                             "    n: !!null ~\n    s: !!str [1]\n    local: !mytag 3\n"], "args": PF},
+    {"id": "unicode_and_crlf", "files": ["/**:\r\n  ros__parameters:\r\n    name: caf\u00e9\r\n    x: 1.5\r\n"],
+     "args": PF},
+    {"id": "comments_and_block_styles", "files": ["# robot settings\n/**:  # every node\n  ros__parameters:\n"
+                                                  "    text: |\n      two\n      lines\n    folded: >\n      a\n      b\n"
+                                                  "    plain: multi\n      word\n"], "args": PF},
+    {"id": "file_is_directory", "args": ["--ros-args", "--params-file", "{DIR}"]},
     {"id": "use_sim_time_file", "files": ["/**:\n  ros__parameters:\n    use_sim_time: true\n"], "args": PF},
     # -- errors ------------------------------------------------------------------------------------------------------
     {"id": "file_missing", "args": ["--ros-args", "--params-file", "{DIR}/nowhere.yaml"]},
