@@ -521,59 +521,21 @@ def _launch_target(args: argparse.Namespace) -> tuple[Path, dict[str, Path], dic
     return found[0], packages, values
 
 
-def _is_ros2_launch(args: argparse.Namespace) -> bool:
-    """Whether `rosgrade launch` was given a ROS 2 launch file (`PATH` or `PKG FILE`)."""
-    from grader.launch import ros2_cli
-    from grader.workspace import WorkspaceError, read_workspace
-
-    if args.file.is_file():
-        return ros2_cli.is_ros2_file(args.file, ros2_cli.build_type_of(args.file))
-    if not args.args or ":=" in args.args[0]:
-        return False
-    name = Path(args.args[0])
-    if name.name.endswith(ros2_cli.ROS2_SUFFIXES):
-        return True
-    try:
-        package = read_workspace(args.workspace or Path.cwd()).package(str(args.file))
-    except WorkspaceError:
-        return False
-    return package is not None and package.build_type != "catkin"
-
-
-def _ros2_launch(args: argparse.Namespace) -> int:
-    """`rosgrade launch` on a ROS 2 launch file: `PATH args...` or `PKG FILE args...` (installed files only)."""
-    from grader.launch import ros2_cli
-    from grader.launch.ros2_eval import Ros2LaunchError
-
-    words = list(args.args)
-    try:
-        if not args.file.is_file() and words and ":=" not in words[0]:
-            file = ros2_cli.find_installed(args.workspace or Path.cwd(), str(args.file), words.pop(0))
-        else:
-            file = args.file
-        values: dict[str, str] = {}
-        for item in words:
-            name, sep, value = item.partition(":=")
-            if not sep or not name:
-                raise CliError(f"{item!r} is not a launch argument; pass them as name:=value")
-            values[name] = value
-        mode = "json" if args.json else "show-args" if args.show_args else "nodes"
-        text, notes = ros2_cli.run(file, args.workspace, values, mode)
-    except Ros2LaunchError as exc:
-        raise CliError(str(exc)) from None
-    for note in notes:
-        print(f"rosgrade: note: {note}", file=sys.stderr)
-    sys.stdout.write(text)
-    return EXIT_OK
-
-
 def cmd_launch(args: argparse.Namespace) -> int:
     """Print what a launch file sets and starts, exactly as `roslaunch --dump-params` / `--nodes` print it."""
     from grader.launch import LaunchError, dump_params, node_names, read_launch
     from grader.launch import ros2_cli
 
-    if _is_ros2_launch(args):
-        return _ros2_launch(args)
+    if ros2_cli.is_ros2_target(args.file, args.args, args.workspace):
+        mode = "json" if args.json else "show-args" if args.show_args else "nodes"
+        try:
+            text, notes = ros2_cli.command(args.file, args.args, args.workspace, mode)
+        except ros2_cli.Ros2LaunchError as exc:
+            raise CliError(str(exc)) from None
+        for note in notes:
+            print(f"rosgrade: note: {note}", file=sys.stderr)
+        sys.stdout.write(text)
+        return EXIT_OK
     if args.json or args.show_args:
         raise CliError("--json and --show-args are for ROS 2 launch files (.launch.py); for roslaunch XML use "
                        "--nodes or --dump-params")

@@ -10,6 +10,8 @@ from typing import Any
 from grader.launch.ros2_eval import Evaluation, Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed, workspace_for
 from grader.workspace import WorkspaceError, read_workspace
+
+__all__ = ["Ros2LaunchError", "command", "is_ros2_target"]
 from grader.workspace.model import Workspace, enclosing_folder, read_package
 
 ROS2_SUFFIXES = (".py", ".yaml", ".yml")
@@ -148,3 +150,32 @@ def run(file: Path, workspace_dir: Path | None, values: dict[str, str], mode: st
     if mode == "json":
         return json.dumps(result, indent=2) + "\n", notes
     return nodes_text(result), notes
+
+
+def is_ros2_target(file: Path, words: list[str], workspace_dir: Path | None) -> bool:
+    """Whether `rosgrade launch FILE words...` names a ROS 2 launch file (`PATH` or `PKG FILE`)."""
+    if file.is_file():
+        return is_ros2_file(file, build_type_of(file))
+    if not words or ":=" in words[0]:
+        return False
+    if words[0].endswith(ROS2_SUFFIXES):
+        return True
+    try:
+        package = read_workspace(workspace_dir or Path.cwd()).package(str(file))
+    except WorkspaceError:
+        return False
+    return package is not None and package.build_type != "catkin"
+
+
+def command(file: Path, words: list[str], workspace_dir: Path | None, mode: str) -> tuple[str, list[str]]:
+    """`rosgrade launch` on a ROS 2 launch file: `PATH args...` or `PKG FILE args...` (installed files only)."""
+    words = list(words)
+    if not file.is_file() and words and ":=" not in words[0]:
+        file = find_installed(workspace_dir or Path.cwd(), str(file), words.pop(0))
+    values: dict[str, str] = {}
+    for item in words:
+        name, sep, value = item.partition(":=")
+        if not sep or not name:
+            raise Ros2LaunchError(f"{item!r} is not a launch argument; pass them as name:=value")
+        values[name] = value
+    return run(file, workspace_dir, values, mode)
