@@ -121,7 +121,7 @@ class _Walk:
     is_seq: bool = False
     seq_kind: str | None = None
     new_map: bool = False
-    node_idx: str | None = None
+    node_key: str | None = None
     param: _Param | None = None
 
 
@@ -176,12 +176,13 @@ class ParamSet:
             self._file_event(walk, event, line)
 
     def set_value(self, node: str, name: str, text: str) -> None:
-        """Add one ``-p [node:]name:=text`` (node '/**' when unscoped); ParamFileError(problem '') for an empty one."""
+        """Add one ``-p [node:]name:=text`` (node '/**' when unscoped); ParamFileError with rcl's text when refused
+        (rcl sets none for an empty value: "error not set")."""
         if not node or not name or not text:
             raise ParamFileError("error not set", None)  # rcl returns without setting an error
         import yaml
         param = self._find_param(self._find_node(node), name)
-        walk = _Walk(param=param, node_idx=node)
+        walk = _Walk(param=param, node_key=node)
         try:
             for event in yaml.parse(text, Loader=yaml.SafeLoader):
                 if isinstance(event, yaml.ScalarEvent):
@@ -219,7 +220,7 @@ class ParamSet:
                 raise _fail(f"Cannot have a value before {PARAMS_KEY} at line {line}", 806)
             if not self.nodes:
                 raise _fail(f"Cannot have a value before {PARAMS_KEY} at line {line}", 812)
-            if not self.nodes[walk.node_idx]:
+            if not self.nodes[walk.node_key]:
                 raise _fail(f"Cannot have a value before {PARAMS_KEY} at line {line}", 818)
             self._value(walk, event, line)
             if not walk.is_seq:
@@ -259,20 +260,20 @@ class ParamSet:
             if walk.node_count == 0 or walk.node is None:
                 raise _fail(f"There are no node names before {PARAMS_KEY} at line {line}", 642)
             check_node_key(walk.node)
-            walk.node_idx = self._find_node(walk.node)
+            walk.node_key = self._find_node(walk.node)
             walk.node, walk.node_count = _pop(walk.node, walk.node_count, "/")
             walk.level = 2
             return
-        params = self.nodes[walk.node_idx]
+        params = self.nodes[walk.node_key]
         if walk.new_map:
             if walk.param is None or walk.param not in params:
                 raise _fail(f"Internal error creating param namespace at line {line}", 687)
             walk.param_ns, walk.param_count = walk.param.name, walk.param_count + 1
             walk.new_map = False
         if walk.param_ns is None:
-            walk.param = self._find_param(walk.node_idx, key)
+            walk.param = self._find_param(walk.node_key, key)
         else:
-            walk.param = self._find_param(walk.node_idx, walk.param_ns)
+            walk.param = self._find_param(walk.node_key, walk.param_ns)
             walk.param.name = f"{walk.param_ns}.{key}"
 
     def _value(self, walk: _Walk, event: yaml.ScalarEvent, line: int) -> None:
