@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Probe: for each parameter-file case, rclpy.init with its --ros-args, one Node, its declares; prints one JSON line
-per case (what init, the node and each declare gave). The same script runs on real rclpy and on rosgrade's."""
+"""Probe: for each parameter-file case, remove_ros_args and rclpy.init with its --ros-args, one Node, its declares;
+prints one JSON line per case (what each gave). The same script runs on real rclpy and on rosgrade's."""
 import json
 import os
 import sys
@@ -10,6 +10,7 @@ import rclpy
 from rclpy.context import Context
 from rclpy.node import Node
 from rclpy.parameter import Parameter
+from rclpy.utilities import remove_ros_args
 
 from param_file_cases import CASES
 
@@ -48,6 +49,10 @@ def run_case(case):
         return [_fill(a, paths) for a in args]
 
     out = {"id": case["id"]}
+    try:
+        out["non_ros"] = remove_ros_args(["probe", *fill(case.get("args", []))])
+    except Exception as exc:
+        out["non_ros"] = failure(exc)
     context = Context()
     try:
         rclpy.init(args=["probe", *fill(case.get("args", []))], context=context)

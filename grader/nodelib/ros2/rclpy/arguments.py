@@ -20,7 +20,7 @@ class RCLInvalidROSArgsError(RCLError):
     __module__ = "rclpy._rclpy_pybind11"
 
 
-# How rclpy words an rcl refusal of the command line: at rclpy.init (global) and at Node creation (cli_args).
+# How rclpy words an rcl refusal of the command line: at rclpy.init, and elsewhere (Node's cli_args, remove_ros_args).
 _GLOBAL = "failed to initialize rcl: "
 _LOCAL = "Failed to parse ROS arguments: "
 _ARGUMENTS_C = "/project/src/rcl/arguments.c"
@@ -133,10 +133,10 @@ def _param_rule(rule: str) -> tuple[str, str, str]:
     return node, name, rule[lexemes.index:]
 
 
-def parse(argv: list[str], *, node_args: bool = False) -> RosArgs:
+def parse(argv: list[str], *, at_init: bool = True) -> RosArgs:
     """Split ``argv`` into ROS arguments (after ``--ros-args``, up to ``--``) and the rest, reading parameter files
-    and ``-p`` values in order. A refused argument raises what rclpy raises: RCLError at rclpy.init, and
-    RCLInvalidROSArgsError for a node's own ``cli_args`` (``node_args``), with rcl's text."""
+    and ``-p`` values in order. A refused argument raises what rclpy raises, with rcl's text: RCLError at rclpy.init
+    (``at_init``), RCLInvalidROSArgsError elsewhere (a node's own ``cli_args``, remove_ros_args)."""
     out = RosArgs()
     in_ros = False
     i = 0
@@ -155,7 +155,7 @@ def parse(argv: list[str], *, node_args: bool = False) -> RosArgs:
         if arg not in _FLAGS_WITH_VALUE:
             continue  # --enable-rosout-logs and the like change nothing here
         if i >= len(argv):
-            raise _refused(_trailing(arg), node_args)
+            raise _refused(_trailing(arg), at_init)
         value = argv[i]
         i += 1
         try:
@@ -163,7 +163,7 @@ def parse(argv: list[str], *, node_args: bool = False) -> RosArgs:
         except ParamFileError as exc:
             kind, line = _KINDS[arg]
             raise _refused(f"Couldn't parse {kind}: '{arg} {value}'. Error: {exc}, at {_ARGUMENTS_C}:{line}",
-                           node_args) from None
+                           at_init) from None
     return out
 
 
@@ -197,9 +197,9 @@ def _trailing(flag: str) -> str:
     return f"Couldn't parse trailing {flag} flag. No value given."
 
 
-def _refused(text: str, node_args: bool) -> RCLError:
+def _refused(text: str, at_init: bool) -> RCLError:
     """What rclpy raises for a command line rcl refuses; rcl_init logs its line on stderr first."""
-    if node_args:
+    if not at_init:
         return RCLInvalidROSArgsError(_LOCAL + text)
     get_logger("rcl").error("Failed to parse global arguments")
     return RCLError(_GLOBAL + text)

@@ -72,7 +72,7 @@ class Node:
             raise NotInitializedException("cannot create node")
         from . import arguments
         ros_args = self._context.ros_args if use_global_arguments else arguments.RosArgs()
-        local = arguments.parse(list(cli_args), node_args=True) if cli_args else arguments.RosArgs()
+        local = arguments.parse(list(cli_args), at_init=False) if cli_args else arguments.RosArgs()
         self._remaps = local.remaps + ros_args.remaps
         try:
             names.validate_node_name(node_name)

@@ -23,7 +23,7 @@ def get_default_context(*, shutting_down: bool = False) -> Context:
 
 def remove_ros_args(args=None) -> list[str]:
     """The command line without its ROS arguments."""
-    return arguments.parse(list(args if args is not None else sys.argv)).non_ros
+    return arguments.parse(list(args if args is not None else sys.argv), at_init=False).non_ros
 
 
 def ok(*, context: Context | None = None) -> bool:
