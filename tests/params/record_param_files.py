@@ -7,6 +7,7 @@ The probe (nodes/param_file_probe.py) runs once under the venv's python, on a DD
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 import tempfile
@@ -49,13 +50,19 @@ def record_real() -> dict:
         proc = subprocess.run([python, str(PROBE)], env=env, capture_output=True, text=True, timeout=300)
     finally:
         lock.close()
-    return {"rclpy": version or "unknown", "cases": parse_output(proc.stdout)}
+    return {"rclpy": version or "unknown", "cases": parse_output(proc.stdout), "stderr": stderr_lines(proc.stderr)}
+
+
+def stderr_lines(text: str) -> list[str]:
+    """What the probe logged on stderr, its time stamps taken out (real rclpy logs wall time, rosgrade sim time)."""
+    return [re.sub(r"^\[(\w+)\] \[[0-9.]+\]", r"[\1] [T]", line) for line in text.splitlines() if line.strip()]
 
 
 def dump(record: dict) -> str:
     """The record as JSON with one case a line, so that a re-recording's diff shows the cases that changed."""
     cases = ",\n".join(f"  {json.dumps(k)}: {json.dumps(v, sort_keys=True)}" for k, v in sorted(record["cases"].items()))
-    return f'{{\n "rclpy": {json.dumps(record["rclpy"])},\n "cases": {{\n{cases}\n }}\n}}\n'
+    return (f'{{\n "rclpy": {json.dumps(record["rclpy"])},\n "stderr": {json.dumps(record["stderr"])},\n'
+            f' "cases": {{\n{cases}\n }}\n}}\n')
 
 
 def main(argv: list[str]) -> int:

@@ -13,7 +13,7 @@ from grader.nodelib.common.rosgrade_param_files import ParamFileError, ParamSet
 from grader.runtime.session import run
 from grader.runtime.spec import Limits, NodeSpec, RunSpec
 from sim import Scenario
-from tests.params.record_param_files import PROBE, RECORD, parse_output
+from tests.params.record_param_files import PROBE, RECORD, parse_output, stderr_lines
 
 _spec = importlib.util.spec_from_file_location("param_file_cases", PROBE.parent / "param_file_cases.py")
 _cases = importlib.util.module_from_spec(_spec)
@@ -31,14 +31,19 @@ def ours(tmp_path_factory) -> dict[str, dict]:
                    nodes=(NodeSpec(script=PROBE, flavour="ros2"),), limits=Limits(wall_s=60.0, silent_wall_s=20.0))
     result = run(spec, tmp / "probe.mcap", tmp / "probe.log")
     from grader.recording import Recording
-    lines = [line[2] for line in Recording.open(tmp / "probe.mcap").output_lines() if line[1] == "stdout"]
+    lines = list(Recording.open(tmp / "probe.mcap").output_lines())
     assert result.nodes[0].status == "exited", result.nodes[0].message
-    return parse_output("\n".join(lines))
+    cases = parse_output("\n".join(line[2] for line in lines if line[1] == "stdout"))
+    return {**cases, "stderr": stderr_lines("\n".join(line[2] for line in lines if line[1] == "stderr"))}
 
 
 def test_the_record_covers_every_case() -> None:
     assert sorted(REAL["cases"]) == sorted(CASES), RERECORD
     assert len(CASES) >= 30
+
+
+def test_what_is_logged_on_stderr_is_the_same(ours: dict[str, dict]) -> None:
+    assert ours["stderr"] == REAL["stderr"]
 
 
 @pytest.mark.parametrize("case_id", sorted(CASES))
