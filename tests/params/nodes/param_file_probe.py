@@ -9,6 +9,7 @@ import tempfile
 import rclpy
 from rclpy.context import Context
 from rclpy.node import Node
+from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.parameter import Parameter
 from rclpy.utilities import remove_ros_args
 
@@ -20,6 +21,17 @@ WORK = tempfile.mkdtemp(prefix="pf")
 def shown(value):
     """A parameter value as comparable text (repr keeps nan, inf and the int/float difference)."""
     return repr(list(value) if isinstance(value, (list, tuple)) or type(value).__name__ == "array" else value)
+
+
+def described(result):
+    """What a call returned, as comparable text: parameters by type and value, containers of them, anything else."""
+    if isinstance(result, Parameter):
+        return [result.type_.name, shown(result.value)]
+    if isinstance(result, dict):
+        return {k: described(v) for k, v in sorted(result.items())}
+    if isinstance(result, (list, tuple)):
+        return [described(v) for v in result]
+    return repr(result)
 
 
 def failure(exc):
@@ -89,6 +101,12 @@ def run_case(case):
                 declared.append([name, p.type_.name, shown(p.value)])
             except Exception as exc:
                 declared.append([name, failure(exc)])
+        for call in case.get("calls", ()):
+            try:
+                declared.append([call, described(eval(call, {"node": node, "Parameter": Parameter,
+                                                             "ParameterDescriptor": ParameterDescriptor}))])
+            except Exception as exc:
+                declared.append([call, failure(exc)])
         out["declared"] = declared
         out["params"] = params_of(node)
         node.destroy_node()
