@@ -13,6 +13,8 @@ from pathlib import Path
 from grader import timing
 from grader.interfaces import InterfaceSet, run_interfaces
 from grader.launch import LaunchError, find_packages, read_launch, turtlesim
+from grader.launch.ros2_cli import build_type_of, is_ros2_file
+from grader.launch.ros2_specs import ros2_node_specs
 from grader.launch.specs import node_specs
 from grader.recording import Recording, RecordingError
 from grader.recording.ros2_messages import ACTIONS as BUILTIN_ACTIONS
@@ -162,6 +164,8 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> Started:
     if not found:
         raise ScriptNotFound(f"no launch file named {' or '.join(names)} in the submission; put it in your "
                              "package's launch/ folder")
+    if is_ros2_file(found[0], build_type_of(found[0])):
+        return _ros2_launch_nodes(folder, found[0], rubric)
     packages = find_packages(folder)
     launch = read_launch(found[0], task.args, packages, confine_to=folder)
     nodes, findings = node_specs(launch, packages, task.stdin, task.allow_not_executable)
@@ -179,6 +183,18 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> Started:
     for script in scripts:
         findings += check_script(script)
     return nodes, findings, [found[0], *scripts]
+
+
+def _ros2_launch_nodes(folder: Path, file: Path, rubric: Rubric) -> Started:
+    """The nodes a ROS 2 launch file starts, as `ros2 launch pkg file args...` would (LaunchError if not)."""
+    workspace = read_workspace(folder)
+    nodes, findings = ros2_node_specs(file, workspace, rubric.launch.args, rubric.launch.stdin)
+    scripts = list(dict.fromkeys(spec.script for spec in nodes))
+    for spec in {spec.script: spec for spec in nodes}.values():
+        findings += check_script(spec.script, rosrun=spec.flavour == ROS1)
+        if spec.flavour == ROS2:
+            findings += package_findings(spec.script, spec.entry, workspace)
+    return nodes, findings, [file, *scripts]
 
 
 def _hidden_text(nodes: tuple[NodeSpec, ...], log: Path) -> list[str]:

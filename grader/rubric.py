@@ -103,9 +103,10 @@ class GraderNode(_Model):
 
 
 class LaunchFile(_Model):
-    """Start the task from the student's launch file, as ``roslaunch pkg FILE name:=value ...`` would."""
+    """Start the task from the student's launch file, as ``roslaunch pkg FILE name:=value ...`` (a roslaunch XML file)
+    or ``ros2 launch pkg FILE name:=value ...`` (a ROS 2 .launch.py, .launch.xml or .launch.yaml) would."""
 
-    file: str = Field(pattern=r"^[\w.-]+\.launch(\.xml)?$")
+    file: str = Field(pattern=r"^[\w.-]+\.launch(\.xml|\.py|\.ya?ml)?$")
     aliases: list[str] = []
     args: dict[str, str] = {}
     # roslaunch refuses a script without `chmod +x`; true runs it with python3 anyway (and says so).

@@ -108,7 +108,7 @@ def args_text(arguments: list[dict[str, Any]]) -> str:
     return text
 
 
-def _hint(message: str, workspace: Workspace) -> str:
+def hint_for(message: str, workspace: Workspace) -> str:
     """One line of what to change, for the mistakes students make most."""
     if match := re.search(r"package '([^']+)' not found", message):
         names = ", ".join(sorted(workspace.folders)) or "none"
@@ -140,7 +140,7 @@ def run(file: Path, workspace_dir: Path | None, values: dict[str, str], mode: st
     error = result.get("error")
     if error:
         where = f"\n  at {error['where']}" if error.get("where") else ""
-        hint = _hint(error["message"], workspace)
+        hint = hint_for(error["message"], workspace)
         raise Ros2LaunchError(f"[ERROR] [launch]: {error['message']}{where}" + (f"\n  {hint}" if hint else ""))
     declared = {a["name"] for a in result.get("arguments", [])}
     notes = [f"argument {name}:={value} is not declared by the launch file (ros2 launch accepts it silently; it "

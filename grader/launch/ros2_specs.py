@@ -1,0 +1,98 @@
+"""The runtime's node specs for what a ROS 2 launch file starts: each node of the submission with the argv launch_ros
+builds for it and its parameter files handed over by content; turtlesim_node is the world, and what rosgrade does
+not run (external packages, other programs, delays) is said in a finding."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from grader.launch.model import LaunchError
+from grader.launch.ros2_cli import hint_for
+from grader.launch.ros2_eval import Ros2LaunchError, evaluate
+from grader.launch.ros2_index import installed
+from grader.runtime.client_library import client_library, entry_point, import_roots
+from grader.runtime.spec import NodeSpec, file_arg
+from grader.workspace import WorkspaceError
+from grader.workspace.model import Workspace
+
+MAX_NODES = 16  # each node is a process of the run; a course launch file starts two or three
+
+
+def _argv(process: dict[str, Any]) -> tuple[tuple[str, ...], tuple[tuple[str, bytes], ...]]:
+    """The node's arguments with each --params-file given as a file handed to the node (its content)."""
+    args: list[str] = []
+    files: list[tuple[str, bytes]] = []
+    contents = iter(process.get("params_files", []))
+    for index, word in enumerate(process["args"]):
+        if index > 0 and process["args"][index - 1] == "--params-file":
+            name = f"launch_params_{len(files) + 1}.yaml"
+            files.append((name, str(next(contents)["content"]).encode()))
+            args.append(file_arg(name))
+        else:
+            args.append(word)
+    return tuple(args), tuple(files)
+
+
+def _timing(process: dict[str, Any]) -> str | None:
+    after = process.get("after")
+    if after:
+        return f"starts when {after.get('process', 'the launch')} {'exits' if after['event'] == 'exit' else 'starts'}"
+    if process.get("delay"):
+        return f"starts after {process['delay']:g} s (TimerAction)"
+    return None
+
+
+def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
+                    stdin: str | None) -> tuple[tuple[NodeSpec, ...], list[str]]:
+    """The nodes `ros2 launch` would start from `file`, as node specs, with findings; LaunchError if it fails."""
+    package = workspace.enclosing(file)
+    if package is not None and package.build_type != "catkin" and not installed(package, file):
+        raise LaunchError(f"{file.name} is in package {package.name} but its build does not install it, so "
+                          f"`ros2 launch {package.name} {file.name}` would not find it: list its folder in setup.py's "
+                          "data_files or in install(DIRECTORY ... DESTINATION share/${PROJECT_NAME}).")
+    try:
+        result = evaluate(file, workspace, list(args.items())).result
+    except Ros2LaunchError as exc:
+        raise LaunchError(str(exc)) from None
+    error = result.get("error")
+    if error:
+        where = f" (at {error['where']})" if error.get("where") else ""
+        hint = hint_for(error["message"], workspace)
+        raise LaunchError(f"{file.name}: [ERROR] [launch]: {error['message']}{where}" + (f" {hint}" if hint else ""))
+    declared = {a["name"] for a in result.get("arguments", [])}
+    findings = [f"{file.name} declares no argument {name}, so `ros2 launch` ignored the task's {name}:={value}: "
+                f"declare it with DeclareLaunchArgument('{name}') and use LaunchConfiguration('{name}') where the "
+                "value is needed." for name, value in args.items() if name not in declared]
+    specs: list[NodeSpec] = []
+    for process in result["processes"]:
+        if process["kind"] != "node":
+            findings.append(f"{file.name} starts `{' '.join(process['cmd'])}`: rosgrade runs only the nodes of a "
+                            "launch file, not other programs (ExecuteProcess); it was not run.")
+            continue
+        label = f"{process['package']} {process['executable']}"
+        if process.get("world") and process["executable"] == "turtlesim_node":
+            continue
+        if process.get("world") or process.get("external"):
+            findings.append(f"{file.name} starts {label}, which rosgrade does not run (not part of the graded "
+                            "simulation).")
+            continue
+        try:
+            executable = workspace.executable(process["package"], process["executable"])
+        except WorkspaceError as exc:
+            raise LaunchError(f"{file.name}: {exc}") from None
+        timing = _timing(process)
+        if timing:
+            findings.append(f"{file.name}: {label} {timing}; rosgrade starts it with the others, at the start.")
+        script = executable.script.resolve()
+        flavour = client_library(script, workspace)
+        argv, files = _argv(process)
+        specs.append(NodeSpec(script=script, args=argv, stdin=stdin, flavour=flavour,
+                              entry=entry_point(script, workspace), import_roots=import_roots(script, workspace,
+                                                                                              flavour),
+                              files=files, output="screen" if process.get("output") == "screen" else "log"))
+    if len(specs) > MAX_NODES:
+        raise LaunchError(f"{file.name} starts {len(specs)} nodes; a task runs at most {MAX_NODES}")
+    if not specs:
+        raise LaunchError(f"{file.name} starts none of your nodes (`ros2 launch` would start: "
+                          f"{', '.join(p['name'] for p in result['processes']) or 'nothing'})")
+    return tuple(specs), findings
