@@ -20,6 +20,8 @@ NODE = PACKAGE / "pf_pkg" / "param_file_node.py"
 CONFIG = PACKAGE / "config" / "params.yaml"
 GENERATED = b"/mover:\n  ros__parameters:\n    name: launch\n    speed: 0.5\n"
 
+pytestmark = pytest.mark.slow
+
 
 def printed(tmp: Path, name: str, spec: NodeSpec) -> list[str]:
     session = Session(RunSpec(scenario=Scenario(robot="turtlesim", duration=2.0), nodes=(spec,)),

@@ -13,7 +13,8 @@ from grader.nodelib.common.rosgrade_param_files import ParamFileError, ParamSet
 from grader.runtime.session import run
 from grader.runtime.spec import Limits, NodeSpec, RunSpec
 from sim import Scenario
-from tests.params.record_param_files import PROBE, RECORD, parse_output, stderr_lines
+from tests.params.record_param_files import (PROBE, RECORD, parse_output, record_real, stderr_lines,
+                                             unavailable_reason)
 
 _spec = importlib.util.spec_from_file_location("param_file_cases", PROBE.parent / "param_file_cases.py")
 _cases = importlib.util.module_from_spec(_spec)
@@ -40,6 +41,15 @@ def ours(tmp_path_factory) -> dict[str, dict]:
 def test_the_record_covers_every_case() -> None:
     assert sorted(REAL["cases"]) == sorted(CASES), RERECORD
     assert len(CASES) >= 30
+
+
+def test_the_record_is_what_real_rclpy_gives_today() -> None:
+    """Where real rclpy is installed (CI builds it), the committed record must still be what it gives."""
+    reason = unavailable_reason()
+    if reason:
+        pytest.skip(reason)
+    live = record_real()
+    assert (live["cases"], live["stderr"]) == (REAL["cases"], REAL["stderr"]), RERECORD
 
 
 def test_what_is_logged_on_stderr_is_the_same(ours: dict[str, dict]) -> None:
