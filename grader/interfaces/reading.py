@@ -307,9 +307,9 @@ def read_interfaces(packages: Iterable[Package], flavour: str, builtin: Iterable
         if len(names) == 2:
             service = names[0].rsplit("_", 1)[0] if flavour == "ros2" else names[0][:-len("Request")]
             result.services[service] = (names[0], names[1])
-        elif len(names) == 3:
+        elif len(names) in (3, 7):  # ROS 1: its Goal, Result and Feedback, then the four messages around them
             result.actions[names[0].rsplit("_", 1)[0] if flavour == "ros2" else names[0][:-len("Goal")]] = \
-                tuple(names)
+                tuple(names[:3])
     result.defaults = {k: v for k, v in result.defaults.items() if k in result.types}
     return result
 
