@@ -46,6 +46,11 @@ def install(prefix: Path, launch_share: Path) -> None:
         for name in names:
             (lib / name).write_text("#!/bin/sh\nexit 0\n")
             (lib / name).chmod(stat.S_IRWXU)
+    # The ros2 command line the tutorials' ExecuteProcess actions call: a stand-in that exits at once, so that the
+    # handlers of its start and exit run as they would.
+    (prefix / "bin").mkdir()
+    (prefix / "bin" / "ros2").write_text("#!/bin/sh\nexit 0\n")
+    (prefix / "bin" / "ros2").chmod(stat.S_IRWXU)
 
 
 def record(case: dict, prefix: Path) -> dict:
@@ -108,6 +113,7 @@ def main() -> None:
         prefix = Path(tmp) / "install"
         install(prefix, Path(sys.argv[1]))
         os.environ["AMENT_PREFIX_PATH"] = str(prefix)
+        os.environ["PATH"] = f"{prefix / 'bin'}:{os.environ.get('PATH', '/usr/bin:/bin')}"
         os.environ.pop("ROSGRADE_MODEL", None)
         for case in json.loads((CASES / "runs.json").read_text()):
             result = record(case, prefix)

@@ -1,5 +1,6 @@
 """`rosgrade launch --json` against what real ROS 2 Jazzy launch started for the same launch files (recorded by
-record_real.py into cases/real_records.json): processes in start order, argv, parameter-file contents, errors."""
+record_real.py into cases/real_records.json): processes in start order, argv, parameter-file contents, LogInfo
+texts, errors."""
 from __future__ import annotations
 
 import json
@@ -16,9 +17,6 @@ pytestmark = pytest.mark.slow  # 29 sandboxed evaluations, about 8 s
 CASES = Path(__file__).resolve().parent / "cases"
 RUNS = json.loads((CASES / "runs.json").read_text())
 RECORDS = json.loads((CASES / "real_records.json").read_text())
-# Started by a handler of another process's start in real launch, but `ros2` is not installed where the records were
-# made, so real launch could not start it: its node is compared, the ros2 CLI processes are not.
-CLI_NOT_STARTED = {"event_handlers", "xml_includes_python"}
 
 
 def _cmd(cmd: list[str]) -> list[str]:
@@ -46,7 +44,7 @@ def _real(case_id: str) -> dict:
     record = RECORDS[case_id]
     return {"processes": [{"name": p["name"].rsplit("-", 1)[0], "cmd": _cmd(p["cmd"]), "params": p["params_files"]}
                           for p in record["processes"]],
-            "error": _error(record["error"])}
+            "error": _error(record["error"]), "logs": record["logs"]}
 
 
 def _ours(case: dict) -> dict:
@@ -55,10 +53,8 @@ def _ours(case: dict) -> dict:
     result = evaluate(path, workspace, list(case["args"].items())).result
     processes = [{"name": p["name"].rsplit("-", 1)[0], "cmd": _cmd(p["cmd"]),
                   "params": [f["content"] for f in p.get("params_files", [])]} for p in result["processes"]]
-    if case["id"] in CLI_NOT_STARTED:
-        processes = [p for p in processes if p["cmd"][0] != "ros2"]
     error = result["error"]["message"] if result["error"] else None
-    return {"processes": processes, "error": _error(error)}
+    return {"processes": processes, "error": _error(error), "logs": [log["text"] for log in result["logs"]]}
 
 
 @pytest.fixture(scope="module")
