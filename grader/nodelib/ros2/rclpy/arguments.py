@@ -15,7 +15,8 @@ _LOG_LEVELS = {"unset": 0, "debug": 10, "info": 20, "warn": 30, "warning": 30, "
 
 
 class RCLInvalidROSArgsError(RCLError):
-    """A node's own ``cli_args`` hold a ROS argument rcl refuses (real rclpy's C extension defines it)."""
+    """rcl refuses a ROS argument outside rclpy.init: a node's own ``cli_args``, remove_ros_args (real rclpy's C
+    extension defines it)."""
 
     __module__ = "rclpy._rclpy_pybind11"
 
@@ -31,6 +32,12 @@ _NONE, _EOF, _COLON, _SEPARATOR, _TOKEN, _SLASH, _WILD_ONE, _WILD_MULTI, _DOT = 
 _KINDS = {"-p": ("parameter override rule", 352), "--param": ("parameter override rule", 352),
           "--params-file": ("params file", 415), "-r": ("remap rule", 380), "--remap": ("remap rule", 380),
           "--log-level": ("log level", 441)}
+# What rcl says of each flag given last, with nothing after it, and where.
+_TRAILING = {"-p": ("No parameter override rule found.", 356), "--param": ("No parameter override rule found.", 356),
+             "-r": ("No remap rule found.", 384), "--remap": ("No remap rule found.", 384),
+             "--params-file": ("No file path provided.", 419), "--log-file-name": ("No string prefix provided.", 480),
+             "--log-config-file": ("No file path provided.", 515), "-e": ("No enclave path provided.", 550),
+             "--enclave": ("No enclave path provided.", 550)}
 
 
 @dataclass
@@ -182,19 +189,16 @@ def _apply(out: RosArgs, flag: str, value: str) -> None:
         name, sep, level = value.rpartition(":=")
         level_value = _LOG_LEVELS.get(level.lower())
         if level_value is None:
-            raise ParamFileError(f"Argument {value} is not a valid log level rule", None)
+            raise ParamFileError("Argument does not use a valid severity level", f"{_ARGUMENTS_C}:1858")
         out.log_levels[name if sep else ""] = level_value
 
 
 def _trailing(flag: str) -> str:
     """rcl's text for a flag with nothing after it."""
-    if flag in ("-p", "--param"):
-        return f"Couldn't parse trailing {flag} flag. No parameter override rule found., at {_ARGUMENTS_C}:356"
-    if flag in ("-r", "--remap"):
-        return f"Couldn't parse trailing {flag} flag. No remap rule found., at {_ARGUMENTS_C}:384"
-    if flag == "--params-file":
-        return f"Couldn't parse trailing {flag} flag. No file path provided., at {_ARGUMENTS_C}:419"
-    return f"Couldn't parse trailing {flag} flag. No value given."
+    if flag == "--log-level":
+        return f"Couldn't parse trailing log level flag: '{flag}'. No log level provided., at {_ARGUMENTS_C}:445"
+    what, line = _TRAILING[flag]
+    return f"Couldn't parse trailing {flag} flag. {what}, at {_ARGUMENTS_C}:{line}"
 
 
 def _refused(text: str, at_init: bool) -> RCLError:
