@@ -1,8 +1,9 @@
 """What /scan costs a run: the same rospy and rclpy nodes driving in the arena with and without a /scan subscription.
 
 Usage: python -m tests.bench_lidar [sim_seconds] [repeats]. Runs alternate (without, with, without, ...) in one
-process so that the machine's drift falls on both alike; prints the median wall and CPU seconds (the
-grader's and the node's) of each and their ratios (issue 31 asks for at most 1.3). The world ray-casts /scan only while a node subscribes to it.
+process so that the machine's drift falls on both alike; prints the median wall and CPU seconds (the grader's and
+the node's) of each and their ratios (issue 31 asks for at most 1.3). The world ray-casts /scan only while a node
+subscribes to it.
 """
 from __future__ import annotations
 
