@@ -3,16 +3,16 @@ its processes (--nodes), its arguments (--show-args, as `ros2 launch --show-args
 from __future__ import annotations
 
 import json
-import re
 from pathlib import Path
 from typing import Any
 
 from grader.launch.ros2_eval import Evaluation, Ros2LaunchError, evaluate
+from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_index import installed, workspace_for
 from grader.workspace import WorkspaceError, read_workspace
 
 __all__ = ["Ros2LaunchError", "command", "is_ros2_target"]
-from grader.workspace.model import Workspace, enclosing_folder, read_package
+from grader.workspace.model import enclosing_folder, read_package
 
 ROS2_SUFFIXES = (".py", ".yaml", ".yml")
 MAX_SNIFF_BYTES = 1 << 16
@@ -106,25 +106,6 @@ def args_text(arguments: list[dict[str, Any]]) -> str:
     elif any(a["conditional"] for a in arguments):
         text += "\n* argument(s) which are only used if specific conditions occur\n"
     return text
-
-
-def hint_for(message: str, workspace: Workspace) -> str:
-    """One line of what to change, for the mistakes students make most."""
-    if match := re.search(r"package '([^']+)' not found", message):
-        names = ", ".join(sorted(workspace.folders)) or "none"
-        return (f"No package.xml in the submission says <name>{match[1]}</name> (its packages: {names}); turtlesim "
-                "is the grader's, and simulators and tools (rviz2, gazebo, nav2) are listed but never run.")
-    if match := re.search(r"executable '([^']+)' not found on the libexec directory '[^']*/lib/([^/']+)'", message):
-        package = workspace.package(match[2])
-        built = ", ".join(sorted(e.name for e in package.executables)) if package else ""
-        return (f"The build of {match[2]} installs: {built or 'no executables'} (console_scripts in setup.py, or "
-                "install(PROGRAMS ...)/install(TARGETS ...) in CMakeLists.txt); exec= names one of those.")
-    if match := re.search(r"launch configuration '([^']+)' does not exist", message):
-        return (f"Declare it before it is used: DeclareLaunchArgument('{match[1]}', default_value=...) in Python, "
-                f'<arg name="{match[1]}" default="..."/> in XML.')
-    if match := re.search(r"missing required argument '([^']+)'", message):
-        return f"Give it a value: {match[1]}:=VALUE after the launch file (or a default_value in the file)."
-    return ""
 
 
 def run(file: Path, workspace_dir: Path | None, values: dict[str, str], mode: str) -> tuple[str, list[str]]:

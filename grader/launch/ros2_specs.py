@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from grader.launch.model import LaunchError
-from grader.launch.ros2_cli import hint_for
+from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_eval import Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed
 from grader.runtime.client_library import client_library, entry_point, import_roots

@@ -2,12 +2,10 @@
 from __future__ import annotations
 
 import os
-import shlex
-from pathlib import Path
 from typing import Any, Callable, Optional
 
 from launch.core import (
-    Action, LaunchContext, LaunchDescription, LaunchDescriptionEntity, Substitution, TextSubstitution,
+    Action, LaunchContext, LaunchDescriptionEntity, Substitution, TextSubstitution,
     normalize_to_list_of_substitutions, perform_substitutions,
 )
 
@@ -169,13 +167,6 @@ class IncludeLaunchDescription(Action):
         items = launch_arguments.items() if hasattr(launch_arguments, "items") else (launch_arguments or [])
         self.launch_arguments = [(normalize_to_list_of_substitutions(k), normalize_to_list_of_substitutions(v))
                                  for k, v in items]
-
-    def _argument_names(self) -> list[str]:
-        names = []
-        for key, _ in self.launch_arguments:
-            if all(isinstance(s, TextSubstitution) for s in key):
-                names.append("".join(s.text for s in key))
-        return names
 
     def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity]:
         description = self.launch_description_source.get_launch_description(context)
