@@ -527,4 +527,26 @@ CASES += [
     )),
 ]
 
+# Issue 28: actionlib's ActionServer and ActionClient; log times drift by a clock step a hop, as in p35.
+_P36_GOAL = "goal {} transitions {} terminal {} text {!r} result {}"
+CASES += [
+    Case("p36_actionlib_handles", "p36_actionlib_handles.py", duration=8.0, tolerance_s=0.15, stdout=(
+        "wait_for_server True",
+        "server got goal 1 status _has_header",  # actionlib names status 0 by the first class attribute equal to it
+        "server cancel for goal 3 status RECALLING",
+        "server cancel for goal 4 status PREEMPTING",
+        _P36_GOAL.format(1, ["ACTIVE", "WAITING_FOR_RESULT", "DONE"], "SUCCEEDED", "done", 10),
+        _P36_GOAL.format(2, ["PENDING", "WAITING_FOR_RESULT", "DONE"], "REJECTED", "no", 20),
+        _P36_GOAL.format(3, ["PENDING", "WAITING_FOR_CANCEL_ACK", "RECALLING", "WAITING_FOR_RESULT", "DONE"],
+                         "RECALLED", "canceled", -3),
+        _P36_GOAL.format(4, ["ACTIVE", "WAITING_FOR_CANCEL_ACK", "PREEMPTING", "WAITING_FOR_RESULT", "DONE"],
+                         "PREEMPTED", "canceled", -4),
+        "statuses [('p36-early', 'RECALLED')]",
+        "server cancel for goal 5 status PREEMPTING",
+        "goal 5 transitions ['ACTIVE', 'PREEMPTING', 'WAITING_FOR_RESULT', 'DONE'] terminal PREEMPTED",
+        "statuses after the timeout 0",
+        "end",
+    )),
+]
+
 CASES_BY_ID = {case.id: case for case in CASES}

@@ -212,7 +212,9 @@ class GoalManager:
         self.statuses: list[weakref.ref] = []
         self.send_goal_fn = None
         self.cancel_fn = None
-        self.types = ActionTypes(action_spec)
+        types = ActionTypes(action_spec)
+        self.ActionSpec, self.ActionGoal = types.ActionSpec, types.ActionGoal
+        self.ActionResult, self.ActionFeedback = types.ActionResult, types.ActionFeedback
 
     def register_send_goal_fn(self, fn) -> None:
         self.send_goal_fn = fn
@@ -227,7 +229,7 @@ class GoalManager:
         return GoalID(id="%s-%i-%.3f" % (rospy.get_caller_id(), number, now.to_sec()), stamp=now)
 
     def init_goal(self, goal, transition_cb=None, feedback_cb=None) -> ClientGoalHandle:
-        action_goal = self.types.ActionGoal(header=Header(), goal_id=self._generate_id(), goal=goal)
+        action_goal = self.ActionGoal(header=Header(), goal_id=self._generate_id(), goal=goal)
         action_goal.header.stamp = rospy.get_rostime()
         machine = CommStateMachine(action_goal, transition_cb, feedback_cb, self.send_goal_fn, self.cancel_fn)
         with self.list_mutex:

@@ -60,11 +60,18 @@ class ServerGoalHandle:
         self.handle_tracker = handle_tracker
         self.goal = status_tracker.goal if status_tracker else None
 
+    def _debug_line(self) -> None:
+        """actionlib builds a debug line from the goal id (twice) before each transition, at any log level: on a
+        handle without a goal each build logs its error."""
+        self.get_goal_id()
+        self.get_goal_id()
+
     def get_default_result(self):
         return self.action_server.ActionResultType()
 
     def _end(self, allowed: dict[int, int], result, text: str, wrong_state: str) -> None:
         """Move to ``allowed[status]`` and publish the result, or log rospy's error for a goal in another state."""
+        self._debug_line()
         if not self.goal:
             rospy.logerr("Attempt to set status on an uninitialized ServerGoalHandle")
             return
@@ -80,6 +87,7 @@ class ServerGoalHandle:
 
     def set_accepted(self, text: str = "") -> None:
         """PENDING to ACTIVE, or RECALLING to PREEMPTING (a cancel came before the goal was accepted)."""
+        self._debug_line()
         if not self.goal:
             rospy.logerr("Attempt to set status on an uninitialized ServerGoalHandle")
             return
@@ -112,6 +120,7 @@ class ServerGoalHandle:
                   "To transition to a succeeded state, the goal must be in a preempting or active state")
 
     def publish_feedback(self, feedback) -> None:
+        self._debug_line()
         if not self.goal:
             rospy.logerr("Attempt to publish feedback on an uninitialized ServerGoalHandle")
             return
@@ -148,6 +157,7 @@ class ServerGoalHandle:
 
     def set_cancel_requested(self) -> bool:
         """PENDING to RECALLING or ACTIVE to PREEMPTING; True when the server's cancel callback should run."""
+        self._debug_line()
         if not self.goal:
             return False
         with self.action_server.lock:
