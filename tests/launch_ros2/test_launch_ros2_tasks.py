@@ -45,6 +45,12 @@ def test_references_score_full_marks(graded: dict[str, TaskReport], name: str) -
     assert graded[name].score == graded[name].max_score
 
 
+def test_text_of_a_node_without_output_screen_is_said_to_go_to_the_log(graded: dict[str, TaskReport]) -> None:
+    assert any("its Node has no output='screen': ros2 launch sends that text to ~/.ros/log" in d
+               for d in graded["launch_distance"].diagnostics)
+    assert not any("output=" in d for d in graded["launch_distance_param"].diagnostics)
+
+
 def test_hard_coded_distance_loses_exactly_stop_position(graded: dict[str, TaskReport]) -> None:
     report = graded["launch_distance_hardcoded"]
     assert _lost(report) == {"stop_position"}

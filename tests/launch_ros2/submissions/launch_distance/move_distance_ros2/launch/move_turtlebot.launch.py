@@ -7,6 +7,6 @@ from launch_ros.actions import Node
 def generate_launch_description():
     return LaunchDescription([
         DeclareLaunchArgument('distance', default_value='3', description='How far to drive along x (m)'),
-        Node(package='move_distance_ros2', executable='move_turtlebot', output='screen',
+        Node(package='move_distance_ros2', executable='move_turtlebot',
              arguments=['0.2', '0', LaunchConfiguration('distance')]),
     ])
