@@ -24,6 +24,7 @@ setup(
             'triangle = turtlesim_tutorials.triangle:main',
             'go_to_goal = turtlesim_tutorials.go_to_goal:main',
             'clean = turtlesim_tutorials.clean:main',
+            'spawn_draw = turtlesim_tutorials.spawn_draw:main',
         ],
     },
 )

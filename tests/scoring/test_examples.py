@@ -33,8 +33,10 @@ def _reference_scripts(task: str) -> list[Path]:
     return started or [script for package in packages.values() for script in package.rglob("*.py")]
 
 
-# Tasks of ROS 2 interfaces only (example_interfaces): their reference is an ament_python package of rclpy nodes.
-ROS2_TASKS = {"add_two_ints": "py_srvcli", "fibonacci": "py_action", "fibonacci_client": "py_action"}
+# ROS 2-only tasks whose reference is an ament_python package of rclpy nodes (its folder).
+ROS2_TASKS = {"add_two_ints": "reference_solutions_ros2/py_srvcli", "fibonacci": "reference_solutions_ros2/py_action",
+              "fibonacci_client": "reference_solutions_ros2/py_action",
+              "turtle_spawn_draw": "reference_solutions_turtlesim_ros2/turtlesim_tutorials"}
 # ROS 2-only tasks whose reference is a COM2009 ament_cmake package: scripts/ installed by install(PROGRAMS).
 ROS2_CMAKE_TASKS = {"param_circle": "part3_beyond_basics", "number_game": "part4_services",
                     "number_game_client": "part4_services", "explore_forward": "part5_actions"}
@@ -43,7 +45,7 @@ ROS2_CMAKE_TASKS = {"param_circle": "part3_beyond_basics", "number_game": "part4
 @pytest.mark.parametrize("task", sorted(RUBRICS))
 def test_every_task_has_an_executable_reference_node(task: str) -> None:
     if task in ROS2_TASKS:
-        package = ROOT / "reference_solutions_ros2" / ROS2_TASKS[task]
+        package = ROOT / ROS2_TASKS[task]
         for node in RUBRICS[task].nodes:
             text = next(package.rglob(node.script)).read_text(encoding="utf-8")
             assert "rclpy" in text and f"{node.script[:-3]} = " in (package / "setup.py").read_text()

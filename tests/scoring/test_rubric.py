@@ -35,6 +35,7 @@ CONTRACT = {
     "fibonacci": ["accepts_goal", "feedback", "result", "cancel_stops"],
     "fibonacci_client": ["sends_goal", "reports_feedback", "reports_result"],
     "explore_forward": ["accepts_goal", "feedback", "stops_at_distance", "result", "cancel_stops", "cancel_halts"],
+    "turtle_spawn_draw": ["spawned", "pens", "figure"],
 }
 
 MINIMAL = '''
