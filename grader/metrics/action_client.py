@@ -43,7 +43,7 @@ def measure(run: RunData, params: Params) -> Measurement:
         for name, want in params.goal.items():
             got = (sent or {}).get(name)
             if not _matches(got, want, params.tolerance):
-                wrong = f"the goal's {name} was {got!r}, expected {want!r}"
+                wrong = f"The goal's {name} was {got!r}, expected {want!r}"
                 break
     accepted = bool(goals and goals[0].response is not None and goals[0].response.get("accepted"))
     result = plain(results[0].response.get("result")) if results else None
@@ -57,7 +57,7 @@ def measure(run: RunData, params: Params) -> Measurement:
     return {
         "n_goals": len(goals),
         "goal_correct": 1.0 if goals and not wrong else 0.0,
-        "first_wrong_goal": wrong or never,
+        "first_wrong_goal": wrong or never[:1].upper() + never[1:],
         "accepted": 1.0 if accepted else 0.0,
         "result": "" if result is None else f"{params.sequence}={sequence}",
         "n_feedback_expected": len(prefixes),
