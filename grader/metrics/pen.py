@@ -141,7 +141,8 @@ def _serve(call: ServiceCall, live: dict[str, Turtle], canvas: Canvas, params: _
         canvas.clear(background(params))
     elif call.service == "/spawn":
         name = str(call.response["name"])
-        live[name] = Turtle.spawned(name, float(request["x"]), float(request["y"]), float(request["theta"]))
+        if name:  # a ROS 2 /spawn that turtlesim refused still answers, with an empty name
+            live[name] = Turtle.spawned(name, float(request["x"]), float(request["y"]), float(request["theta"]))
     elif call.service == "/kill":
         live.pop(str(request["name"]), None)
     else:

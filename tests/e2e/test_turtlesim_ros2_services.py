@@ -57,4 +57,5 @@ def test_the_redraw_from_the_ros2_recording_is_the_worlds_canvas(served) -> None
     world, run, _ = served
     drawing = redraw(run)
     assert np.array_equal(drawing.canvas.pixels, world.pixels)
+    assert [t.name for t in drawing.turtles] == ["turtle1", "turtle2"]  # the refused spawn drew no turtle
     assert (255, 0, 0) in {tuple(c) for c in world.pixels.reshape(-1, 3)}  # turtle2's teleport, in its red pen
