@@ -116,13 +116,13 @@ def run(file: Path, workspace_dir: Path | None, values: dict[str, str], mode: st
         raise Ros2LaunchError(str(exc)) from None
     evaluation: Evaluation = evaluate(file, workspace, list(values.items()), show_args=mode == "show-args")
     result = evaluation.result
-    if mode == "show-args":
-        return args_text(result["arguments"]), []
     error = result.get("error")
     if error:
         where = f"\n  at {error['where']}" if error.get("where") else ""
         hint = hint_for(error["message"], workspace)
         raise Ros2LaunchError(f"[ERROR] [launch]: {error['message']}{where}" + (f"\n  {hint}" if hint else ""))
+    if mode == "show-args":
+        return args_text(result["arguments"]), []
     declared = {a["name"] for a in result.get("arguments", [])}
     notes = [f"argument {name}:={value} is not declared by the launch file (ros2 launch accepts it silently; it "
              "changes nothing unless a LaunchConfiguration reads it)" for name, value in values.items()

@@ -4,8 +4,8 @@
 launch_ros and rclpy (Jazzy); LAUNCH_SHARE is that install's share/launch folder (launch_xml reads its substitution
 grammar from there). It installs nothing and fetches nothing: the case package is laid out as colcon would install it in a temporary prefix, with
 stand-in executables, and each case runs through launch's own LaunchService as `ros2 launch` runs it. A handler on
-every process start records its argv and the parameter files it is handed; errors are what launch logs. Writes
-cases/real_records.json.
+every process start records its argv and the parameter files it is handed; errors are what launch logs. Also
+records what `ros2 launch --show-args` prints for each file. Writes cases/real_records.json.
 """
 from __future__ import annotations
 
@@ -93,6 +93,22 @@ def record(case: dict, prefix: Path) -> dict:
     return {"processes": started, "error": errors[0] if errors else None, "logs": user}
 
 
+def show_args(path: Path) -> str:
+    """What `ros2 launch --show-args` prints for the file."""
+    import contextlib
+    import io
+
+    from ros2launch.api import print_arguments_of_launch_file
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        try:
+            print_arguments_of_launch_file(launch_file_path=str(path))
+        except Exception as exc:  # the file fails to load: what ros2 launch reports instead
+            return f"error: {type(exc).__name__}"
+    return out.getvalue()
+
+
 def main() -> None:
     # launch_ros imports composition_interfaces for composable nodes, which no case uses; the PyPI wheels lack it.
     if "composition_interfaces" not in sys.modules:
@@ -119,6 +135,8 @@ def main() -> None:
             result = record(case, prefix)
             text = json.dumps(result).replace(str(prefix), "<prefix>")
             out[case["id"]] = json.loads(text)
+        for file in sorted({case["file"] for case in json.loads((CASES / "runs.json").read_text())}):
+            out.setdefault("show_args", {})[file] = show_args(prefix / "share" / "course_pkg" / "launch" / file)
     (CASES / "real_records.json").write_text(json.dumps(out, indent=1, sort_keys=True) + "\n")
 
 

@@ -174,17 +174,30 @@ class IncludeLaunchDescription(Action):
         context.extend_locals({"current_launch_file_path": path,
                                "current_launch_file_directory": os.path.dirname(path)})
         given = [perform_substitutions(context, k) for k, _ in self.launch_arguments]
-        for argument in description.get_launch_arguments():
+        for argument, includes in description.get_launch_arguments_with_include_launch_description_actions():
             if argument._conditionally_included or argument.default_value is not None:
                 continue
+            for include in includes or []:
+                given.extend(include.argument_names_without_context())
             if argument.name not in given:
                 raise RuntimeError(f"Included launch description missing required argument '{argument.name}' "
                                    f"(description: '{argument.description}'), given: [{', '.join(given)}]")
         sets = [SetLaunchConfiguration(k, v) for k, v in self.launch_arguments]
         return [*sets, description]
 
-    def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
-        return []
+    def argument_names_without_context(self) -> list[str]:
+        """The names of its launch arguments that need no context to be known."""
+        names = []
+        for key, _ in self.launch_arguments:
+            try:
+                names.append(perform_substitutions(LaunchContext(), key))
+            except Exception:
+                continue
+        return names
+
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        description = self.launch_description_source.try_get_launch_description_without_context()
+        return [description] if description is not None else []
 
 
 class TimerAction(Action):
@@ -201,7 +214,7 @@ class TimerAction(Action):
             else float(perform_substitutions(context, self.period))
         context.recorder.defer(float(period), self.actions, context)
 
-    def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
+    def describe_conditional_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return self.actions
 
 
@@ -249,6 +262,10 @@ class RegisterEventHandler(Action):
 
     def execute(self, context: LaunchContext) -> None:
         context.recorder.register(self.event_handler, context)
+
+    def describe_conditional_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        handler = self.event_handler.handler
+        return list(handler) if isinstance(handler, (list, tuple)) else []
 
 
 class LogInfo(Action):

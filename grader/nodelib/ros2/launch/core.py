@@ -12,6 +12,10 @@ from collections.abc import Iterable
 from typing import Any, Callable, Optional, Union
 
 
+# The evaluator's recorder, for contexts made while a launch file is being read (an include read without one).
+RECORDER: list[Any] = [None]
+
+
 class SubstitutionFailure(Exception):
     """A substitution could not be performed (real launch's launch.substitutions.SubstitutionFailure)."""
 
@@ -79,7 +83,7 @@ class LaunchContext:
         self.locals: dict[str, Any] = {}
         self._locals_stack: list[dict[str, Any]] = []
         self.argv: list[str] = []
-        self.recorder: Any = None  # the evaluator's: processes, logs, deferred entities
+        self.recorder: Any = RECORDER[0]  # the evaluator's: processes, logs, deferred entities
 
     def perform_substitution(self, sub: Substitution) -> str:
         return sub.perform(self)
@@ -110,6 +114,9 @@ class LaunchDescriptionEntity:
         return None
 
     def describe_sub_entities(self) -> list["LaunchDescriptionEntity"]:
+        return []
+
+    def describe_conditional_sub_entities(self) -> list["LaunchDescriptionEntity"]:
         return []
 
 
@@ -144,6 +151,9 @@ class Action(LaunchDescriptionEntity):
     def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
         return []
 
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
+        return self.get_sub_entities()
+
 
 class LaunchDescription(LaunchDescriptionEntity):
     """The list of entities a launch file returns."""
@@ -170,21 +180,29 @@ class LaunchDescription(LaunchDescriptionEntity):
         return list(self.__entities)
 
     def get_launch_arguments(self, conditional_inclusion: bool = False) -> list[Any]:
-        """Every DeclareLaunchArgument reachable without evaluating anything, in order (as real launch finds them)."""
-        from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
-        found: list[Any] = []
+        """Every DeclareLaunchArgument found without running the launch (first declaration of a name wins)."""
+        return [argument for argument, _ in self.get_launch_arguments_with_include_launch_description_actions(
+            conditional_inclusion)]
 
-        def walk(entities: list[LaunchDescriptionEntity], conditional: bool) -> None:
+    def get_launch_arguments_with_include_launch_description_actions(
+            self, conditional_inclusion: bool = False) -> list[tuple[Any, Optional[list[Any]]]]:
+        """The arguments with the includes they were found through (None: this file's own), as real launch finds
+        them: includes are loaded without a context where their path allows it, and arguments under a condition,
+        a timer or an event handler are marked conditionally included."""
+        from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
+        found: list[tuple[Any, Optional[list[Any]]]] = []
+
+        def walk(entities: list[LaunchDescriptionEntity], conditional: bool, includes: Optional[list[Any]]) -> None:
             for entity in entities:
                 if isinstance(entity, DeclareLaunchArgument):
-                    entity._conditionally_included = conditional
-                    if entity.name not in [a.name for a in found]:
-                        found.append(entity)
-                elif isinstance(entity, IncludeLaunchDescription):
-                    continue
-                else:
-                    inner = conditional or getattr(entity, "condition", None) is not None
-                    walk(entity.describe_sub_entities() if not isinstance(entity, Action)
-                         else entity.get_sub_entities(), inner)
-        walk(self.__entities, conditional_inclusion)
+                    if entity.name in [a.name for a, _ in found]:
+                        continue
+                    entity._conditionally_included = conditional or entity.condition is not None
+                    found.append((entity, includes))
+                nested = includes
+                if isinstance(entity, IncludeLaunchDescription):
+                    nested = [*(includes or []), entity]
+                walk(entity.describe_sub_entities(), False, nested)
+                walk(entity.describe_conditional_sub_entities(), True, nested)
+        walk(self.__entities, conditional_inclusion, None)
         return found

@@ -38,6 +38,21 @@ class LaunchDescriptionSource:
         self.location = perform_substitutions(context, self.path_subs)
         return context.recorder.load(self.location, self.kind, context)
 
+    def try_get_launch_description_without_context(self) -> LaunchDescription | None:
+        """The included description when its path needs no launch configuration (for finding its arguments)."""
+        from launch.rosgrade_evaluate import EvaluationError
+        context = LaunchContext()
+        try:
+            path = perform_substitutions(context, self.path_subs)
+        except Exception:
+            return None
+        try:
+            return context.recorder.load(path, self.kind, context)
+        except EvaluationError:
+            raise
+        except Exception:
+            return None
+
 
 class PythonLaunchDescriptionSource(LaunchDescriptionSource):
     """A .launch.py file."""

@@ -15,7 +15,9 @@ import traceback
 from typing import Any
 
 from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
-from launch.core import Action, InvalidLaunchFileError, LaunchContext, LaunchDescription, LaunchDescriptionEntity
+from launch.core import (
+    RECORDER, Action, InvalidLaunchFileError, LaunchContext, LaunchDescription, LaunchDescriptionEntity,
+)
 from launch.launch_description_sources import AnyLaunchDescriptionSource, load_python_launch_file_as_module
 
 MAX_PROCESSES = 200  # a course launch file starts a handful; each is a process of the run
@@ -178,11 +180,9 @@ def _where(exc: BaseException, files: list[str]) -> str | None:
     return found
 
 
-def show_args(path: str) -> list[dict[str, Any]]:
+def show_args(path: str, recorder: Recorder) -> list[dict[str, Any]]:
     """The arguments the file declares (as `ros2 launch --show-args`), without evaluating it."""
-    recorder = Recorder()
     context = LaunchContext()
-    context.recorder = recorder
     description = recorder.load(path, "any", context)
     return [{"name": a.name, "description": a.description,
              "default": None if a.default_value is None else " + ".join(s.describe() for s in a.default_value),
@@ -192,11 +192,11 @@ def show_args(path: str) -> list[dict[str, Any]]:
 
 def evaluate(path: str, arguments: list[tuple[str, str]], only_args: bool = False) -> dict[str, Any]:
     recorder = Recorder()
+    RECORDER[0] = recorder
     try:
         if only_args:
-            return {"arguments": show_args(path)}
+            return {"arguments": show_args(path, recorder), "error": None}
         context = LaunchContext()
-        context.recorder = recorder
         recorder.run(context, IncludeLaunchDescription(AnyLaunchDescriptionSource(path), launch_arguments=arguments))
         return {**recorder.result(), "error": None}
     except RecursionError:

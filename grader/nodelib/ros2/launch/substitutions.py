@@ -37,7 +37,7 @@ class LaunchConfiguration(Substitution):
         return context.launch_configurations[name]
 
     def describe(self) -> str:
-        return "LaunchConfig('" + " + ".join(s.describe() for s in self.variable_name) + "')"
+        return f"LaunchConfig({' + '.join(s.describe() for s in self.variable_name)})"
 
 
 class PathJoinSubstitution(Substitution):
@@ -48,6 +48,9 @@ class PathJoinSubstitution(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         return os.path.join(*[perform_substitutions(context, item) for item in self.substitutions])
+
+    def describe(self) -> str:
+        return f"PathJoin('{' + '.join(s.describe() for item in self.substitutions for s in item)}')"
 
 
 class PythonExpression(Substitution):
@@ -67,6 +70,10 @@ class PythonExpression(Substitution):
             scope[module.__name__] = module
         return str(eval(perform_substitutions(context, self.expression), {}, scope))
 
+    def describe(self) -> str:
+        return (f"PythonExpr({' + '.join(s.describe() for s in self.expression)}, "
+                f"[{', '.join(s.describe() for s in self.python_modules)}])")
+
 
 class EnvironmentVariable(Substitution):
     """An environment variable of the launch (default_value when unset; without one, an error)."""
@@ -82,6 +89,9 @@ class EnvironmentVariable(Substitution):
         if value is None:
             raise SubstitutionFailure(f"environment variable '{name}' does not exist")
         return value
+
+    def describe(self) -> str:
+        return f"EnvVar({' + '.join(s.describe() for s in self.name)})"
 
 
 class LocalSubstitution(Substitution):
@@ -105,6 +115,9 @@ class ThisLaunchFileDir(Substitution):
         if value is None:
             raise SubstitutionFailure("ThisLaunchFileDir used outside of a launch file (in a script)")
         return value
+
+    def describe(self) -> str:
+        return "ThisLaunchFileDir()"
 
 
 class ThisLaunchFile(Substitution):

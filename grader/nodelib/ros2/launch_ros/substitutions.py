@@ -19,6 +19,9 @@ class FindPackagePrefix(Substitution):
     def perform(self, context: LaunchContext) -> str:
         return _entry(perform_substitutions(context, self.package))["prefix"]
 
+    def describe(self) -> str:
+        return f"{type(self).__name__}(pkg={' + '.join(s.describe() for s in self.package)})"
+
 
 class FindPackageShare(FindPackagePrefix):
     """The share folder of a package (where its launch and config files are installed)."""
