@@ -13,7 +13,6 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from adversarial_helpers import CORPUS, LIMITS, assert_nothing_escaped, refuses_to_run_nodes  # noqa: E402
 
 from grader.metrics import METRICS  # noqa: E402
-from grader.metrics.base import MetricError  # noqa: E402
 from grader.metrics.run import RunData  # noqa: E402
 from grader.recording import Recording  # noqa: E402
 from grader.runtime import NodeSpec, RunSpec  # noqa: E402
