@@ -89,7 +89,8 @@ def record(case: dict, prefix: Path) -> dict:
         logger.removeHandler(handler)
     errors = [m for m in logs if m.startswith("Caught exception in launch")]
     user = [m for m in logs if m in {"Turtlesim started, spawning turtle", "Spawn finished",
-                                     "square done, shutting down"} or m.startswith(("mode is ", "robot is "))]
+                                     "square done, shutting down", "launch is shutting down"}
+            or m.startswith(("mode is ", "robot is ", "timer fired"))]
     return {"processes": started, "error": errors[0] if errors else None, "logs": user}
 
 
