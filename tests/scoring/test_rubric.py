@@ -36,6 +36,7 @@ CONTRACT = {
     "fibonacci_client": ["sends_goal", "reports_feedback", "reports_result"],
     "explore_forward": ["accepts_goal", "feedback", "stops_at_distance", "result", "cancel_stops", "cancel_halts"],
     "turtle_spawn_draw": ["spawned", "pens", "figure"],
+    "lidar_distance": ["distances", "rate"],
 }
 
 MINIMAL = '''
