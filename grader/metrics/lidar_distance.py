@@ -22,6 +22,9 @@ _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _WITH_METRES = re.compile(rf"({_NUMBER})\s*(?:m\b|metres\b|meters\b)")
 _WITH_DEGREES = re.compile(rf"({_NUMBER})\s*(?:°|deg\b|degs\b|degrees\b)")
 _ANY = re.compile(_NUMBER)
+# What rclpy logs when a subscription cannot match a publisher's QoS (tests/conformance_ros2/qos_matrix_jazzy.json).
+_INCOMPATIBLE = re.compile(r"New publisher discovered on topic '(?P<topic>[^']*)', offering incompatible QoS\..*"
+                           r"Last incompatible policy: (?P<policy>\w+)")
 
 
 class Params(TrajectoryParams):
@@ -31,6 +34,7 @@ class Params(TrajectoryParams):
     distance_tolerance: float = Field(0.05, gt=0)  # metres
     angle_tolerance_deg: float = Field(5.0, gt=0)
     lag_scans: int = Field(3, ge=1)
+    noise_margin: float = Field(0.03, ge=0)  # metres: beams this close to the nearest count as nearest (3σ noise)
 
 
 def reading(text: str) -> tuple[float, float] | None:
@@ -44,31 +48,41 @@ def reading(text: str) -> tuple[float, float] | None:
     return None
 
 
-def nearest_ahead(run: RunData, scan: ScanConfig, pose: tuple[float, float, float], arc: float
-                  ) -> tuple[float, float]:
-    """(distance, angle in degrees) of the beam within ``arc`` rad of ahead that reads least at ``pose`` (inf, nan:
-    none in range)."""
+def beams_ahead(run: RunData, scan: ScanConfig, pose: tuple[float, float, float], arc: float
+                ) -> list[tuple[float, float]]:
+    """(angle in degrees, noise-free range) of each beam within ``arc`` rad of ahead at ``pose`` (inf: nothing in
+    range)."""
     x, y, yaw = pose
     mx = x + scan.mount[0] * math.cos(yaw) - scan.mount[1] * math.sin(yaw)
     my = y + scan.mount[0] * math.sin(yaw) + scan.mount[1] * math.cos(yaw)
     increment = (scan.angle_max - scan.angle_min) / (scan.samples - 1)
-    best, at = math.inf, math.nan
+    beams = []
     for i in range(scan.samples):
         angle = math.remainder(scan.angle_min + i * increment, 2 * math.pi)
         if abs(angle) > arc:
             continue
         dx, dy = math.cos(yaw + angle), math.sin(yaw + angle)
         d = min((ray_distance(mx, my, dx, dy, o) for o in run.obstacles), default=math.inf)
-        if scan.range_min <= d <= scan.range_max and d < best:
-            best, at = d, math.degrees(angle)
-    return best, at
+        beams.append((math.degrees(angle), d if scan.range_min <= d <= scan.range_max else math.inf))
+    return beams
 
 
-def _matches(read: tuple[float, float], truth: tuple[float, float], params: Params) -> tuple[bool, bool]:
+def nearest(beams: list[tuple[float, float]]) -> tuple[float, float]:
+    """(distance, angle in degrees) of the beam that reads least (inf, nan: none in range)."""
+    found = [(d, a) for a, d in beams if math.isfinite(d)]
+    return min(found) if found else (math.inf, math.nan)
+
+
+def _matches(read: tuple[float, float], beams: list[tuple[float, float]], params: Params) -> tuple[bool, bool]:
+    """Whether the distance is the nearest beam's, and whether the angle is that of a beam reading as near (beams
+    within the noise of the nearest are equally "the nearest" in a noisy scan)."""
     distance, angle = read
-    right_distance = math.isfinite(truth[0]) and abs(distance - truth[0]) <= params.distance_tolerance
-    off = abs(math.remainder(math.radians(angle - truth[1]), 2 * math.pi)) if math.isfinite(truth[1]) else math.inf
-    return right_distance, right_distance and math.degrees(off) <= params.angle_tolerance_deg
+    least = nearest(beams)[0]
+    if not math.isfinite(least) or abs(distance - least) > params.distance_tolerance:
+        return False, False
+    near = [a for a, d in beams if d <= least + params.noise_margin]
+    return True, any(abs(math.degrees(math.remainder(math.radians(angle - a), 2 * math.pi)))
+                     <= params.angle_tolerance_deg for a in near)
 
 
 def _readings(lines: tuple[OutputLine, ...]) -> list[tuple[float, float, float]]:
@@ -81,6 +95,15 @@ def _readings(lines: tuple[OutputLine, ...]) -> list[tuple[float, float, float]]
             by_stream.setdefault(line.stream, []).append((line.t, *found))
     rank = {"rosout": 0, "stdout": 1}
     return max(by_stream.items(), key=lambda kv: (len(kv[1]), -rank.get(kv[0], 2)), default=("", []))[1]
+
+
+def incompatible_qos(lines: tuple[OutputLine, ...], topic: str = "/scan") -> str:
+    """The policy rclpy named when the node's subscription to ``topic`` could not match the publisher ("": none)."""
+    for line in lines:
+        found = _INCOMPATIBLE.search(line.text)
+        if found and found.group("topic") == topic:
+            return found.group("policy")
+    return ""
 
 
 def measure(run: RunData, params: Params) -> Measurement:
@@ -97,27 +120,28 @@ def measure(run: RunData, params: Params) -> Measurement:
         raise MetricError("the recording has no poses to locate the robot")
     readings = [r for r in _readings(run.lines) if r[0] >= run.start_time]
     period = 1.0 / scan.rate_hz
-    truths: dict[int, tuple[float, float]] = {}
+    sweeps: dict[int, list[tuple[float, float]]] = {}
     right = right_angles = 0
     first_wrong = ""
     for t, distance, angle in readings:
         sweep = math.floor(t / period + 1e-9)
         matched = (False, False)
         for k in range(sweep, sweep - params.lag_scans, -1):
-            if k not in truths:
+            if k not in sweeps:
                 at = min(int(traj.t.searchsorted(k * period)), len(traj) - 1)
                 pose = float(traj.x[at]), float(traj.y[at]), float(traj.yaw[at])
-                truths[k] = nearest_ahead(run, scan, pose, math.radians(params.arc_deg))
-            found = _matches((distance, angle), truths[k], params)
+                sweeps[k] = beams_ahead(run, scan, pose, math.radians(params.arc_deg))
+            found = _matches((distance, angle), sweeps[k], params)
             matched = max(matched, found)
             if matched == (True, True):
                 break
         right += matched[0]
         right_angles += matched[1]
         if not matched[0] and not first_wrong:
-            truth = truths[sweep]
+            truth = nearest(sweeps[sweep])
             first_wrong = (f"at {t - run.start_time:.1f} s the node printed {distance:g} m at {angle:g}°; /scan read "
                            f"{truth[0]:.2f} m at {truth[1]:.0f}°")
+    mismatch = incompatible_qos(run.lines)
     times = [r[0] for r in readings]
     span = times[-1] - times[0] if len(times) > 1 else 0.0
     n = len(readings)
@@ -128,6 +152,8 @@ def measure(run: RunData, params: Params) -> Measurement:
         "first_wrong": first_wrong,
         "rate_hz": (n - 1) / span if span > 0 else 0.0,
         "max_gap_s": max((b - a for a, b in zip(times, times[1:])), default=math.inf),
+        "incompatible_qos": mismatch,
+        "qos_mismatch": bool(mismatch),
     }
 
 
@@ -135,6 +161,6 @@ METRIC = Metric(
     name="lidar_distance",
     params=Params,
     quantities=frozenset({"n_readings", "distance_fraction", "angle_fraction", "first_wrong", "rate_hz",
-                          "max_gap_s"}),
+                          "max_gap_s", "incompatible_qos", "qos_mismatch"}),
     measure=measure,
 )

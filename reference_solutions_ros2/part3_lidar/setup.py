@@ -19,6 +19,7 @@ setup(
     entry_points={
         'console_scripts': [
             'obstacle_stop = part3_lidar.obstacle_stop:main',
+            'lidar_distance = part3_lidar.lidar_distance:main',
         ],
     },
 )

@@ -9,7 +9,7 @@ import pytest
 from scoring_synth import run
 
 from grader.metrics.base import MetricError
-from grader.metrics.lidar_distance import Params, measure, nearest_ahead, reading
+from grader.metrics.lidar_distance import Params, beams_ahead, measure, nearest, reading
 from grader.metrics.run import OutputLine
 from sim.course import load_course_world
 from sim.profile import load_robot
@@ -34,14 +34,14 @@ def test_readings_with_and_without_units() -> None:
 
 
 def test_the_nearest_object_ahead_from_the_geometry() -> None:
-    distance, angle = nearest_ahead(_at_rest([]), SCAN, POSE, math.radians(20))
+    distance, angle = nearest(beams_ahead(_at_rest([]), SCAN, POSE, math.radians(20)))
     # the LiDAR sits 0.064 m behind the base frame: the north wall 3.5 + 0.064 m straight ahead is beyond its 3.5 m
     # range, and nothing else is within 20°
     assert math.isinf(distance) and math.isnan(angle)
     # from the arena's centre facing east, 14° to the right the long box's corner is nearer than the east wall
-    distance, angle = nearest_ahead(_at_rest([]), SCAN, (0.0, 0.0, 0.0), math.radians(20))
+    distance, angle = nearest(beams_ahead(_at_rest([]), SCAN, (0.0, 0.0, 0.0), math.radians(20)))
     assert distance < 1.8 and -20 <= angle < -10
-    distance, angle = nearest_ahead(_at_rest([]), SCAN, (0.0, 0.0, 0.0), math.radians(10))
+    distance, angle = nearest(beams_ahead(_at_rest([]), SCAN, (0.0, 0.0, 0.0), math.radians(10)))
     assert distance == pytest.approx(2.5 + 0.064, abs=1e-9) and angle == pytest.approx(0.0, abs=1e-9)
 
 

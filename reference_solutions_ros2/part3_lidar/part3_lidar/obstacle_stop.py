@@ -19,7 +19,7 @@ class ObstacleStop(Node):
     def __init__(self):
         super().__init__("obstacle_stop")
         self.cmd_pub = self.create_publisher(TwistStamped, "cmd_vel", 10)
-        # The simulation publishes /scan best-effort: a sensor-data subscriber matches it
+        # Sensor-data QoS (best effort) hears the simulation's reliable /scan and the real robot's best-effort one
         self.create_subscription(LaserScan, "scan", self.scan_callback, qos_profile_sensor_data)
         self.timer = self.create_timer(0.1, self.timer_callback)  # 10 Hz
         self.ahead = None

@@ -1,0 +1,33 @@
+#!/usr/bin/env python3
+# Subscribes to /scan with a TRANSIENT_LOCAL ("latched") QoS profile: the simulation's /scan publisher is VOLATILE,
+# so the two never match and no scan arrives (rclpy warns: "offering incompatible QoS ... DURABILITY").
+import math
+
+import rclpy
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, QoSProfile
+from sensor_msgs.msg import LaserScan
+
+
+class LidarDistance(Node):
+    def __init__(self):
+        super().__init__("lidar_distance")
+        qos = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        self.create_subscription(LaserScan, "scan", self.callback, qos)
+
+    def callback(self, scan):
+        nearest, angle = float("inf"), 0.0
+        for i, r in enumerate(scan.ranges):
+            a = math.degrees(math.remainder(scan.angle_min + i * scan.angle_increment, 2 * math.pi))
+            if abs(a) <= 20 and scan.range_min <= r <= scan.range_max and r < nearest:
+                nearest, angle = r, a
+        self.get_logger().info(f"Nearest object ahead: {nearest:.3f} m at {angle:.1f} degrees")
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(LidarDistance())
+
+
+if __name__ == "__main__":
+    main()
