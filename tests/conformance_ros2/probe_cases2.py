@@ -334,4 +334,13 @@ CASES = [
         "events after undeclare 1",
         "end",
     ), stderr_empty=True),
+    # rclpy.action's graph queries (issue 28): the actions on the graph, served and used by a node.
+    Case("p16_action_graph", "p16_action_graph.py", duration=4.0, stdout=(
+        "names [('/fib', ['action/Fibonacci']), ('/other/fib2', ['action/Fibonacci'])]",
+        "served [('/fib', ['action/Fibonacci'])]",
+        "client of [('/other/fib2', ['action/Fibonacci'])]",
+        "unknown node !! RCLError Failed to get action server names and type: error not set",
+        "unknown node !! RCLError Failed to get action client names and type: error not set",
+        "end",
+    ), stderr_empty=True),
 ]
