@@ -16,10 +16,12 @@ from grader.metrics import OutputLine, RunData, RunInfo
 from grader.metrics.action_record import ActionGoal
 from grader.metrics.run import ServiceCall
 from grader.metrics.motion import wrap
+from grader.metrics.lidar_distance import beams_ahead, nearest
 from grader.metrics.stop_distance import scan_ahead
 from grader.metrics.wall_hits import WARNING
 from grader.report import CriterionResult
 from grader.rubric import Scenario, load_rubrics
+from sim.profile import load_robot
 from grader.scoring import score_task
 
 RUBRICS = load_rubrics()
@@ -84,6 +86,8 @@ def _motion(task: str, s: Scenario, x: float, y: float, yaw: float) -> list[Segm
     if task == "obstacle_stop":  # straight ahead until /scan reads the wall 0.5 m ahead
         free = scan_ahead(_in_world(RUBRICS[task].robot, s, run([])), x, y, yaw)
         return [((free - 0.5) / 0.2, 0.2, 0.0)]
+    if task == "lidar_distance":  # the grader turns the robot (the scenario's script); the node only prints
+        return [(1.0, 0.0, 0.0), (4.0, 0.0, 0.3), (7.0, 0.0, -0.3)]
     if task == "figure_of_eight":  # two 1 m loops of 30 s each, anticlockwise then clockwise
         v, w = math.pi / 30.0, 2.0 * math.pi / 30.0
         return [(30.0, v, w), (30.0, v, -w)]
@@ -125,6 +129,23 @@ def _lines(task: str, odom, t_end: float) -> list[OutputLine]:
     return []
 
 
+def _scan_readings(task: str, robot: str, s: Scenario, odom, t_end: float) -> list[OutputLine]:
+    """lidar_distance: the nearest object within 20° ahead, printed 2 ms after each 5 Hz sweep before ``t_end``."""
+    if task != "lidar_distance":
+        return []
+    scan = load_robot(robot).modes["gazebo"].sensors.scan
+    world = _in_world(robot, s, run([]))
+    out = []
+    for i in range(len(odom)):
+        t = float(odom.t[i])
+        if t + 0.002 < t_end and abs(t * 5 - round(t * 5)) < 1e-6:
+            d, a = nearest(beams_ahead(world, scan, (float(odom.x[i]), float(odom.y[i]), float(odom.yaw[i])),
+                                       math.radians(20)))
+            if math.isfinite(d):
+                out.append(OutputLine(t + 0.002, "stdout", f"Nearest object ahead: {d:.3f} m at {a:.1f} degrees"))
+    return out
+
+
 def _in_world(robot: str, s: Scenario, data: RunData) -> RunData:
     """``data`` as recorded in scenario ``s``'s world: its robot, walls and pillars."""
     return replace(data, robot=robot, obstacles=s.all_obstacles)
@@ -142,7 +163,8 @@ def _scores(task: str, after: str | None, announced: bool = True) -> dict[str, C
         x, y, yaw = _start(rubric.robot, s)
         segs = _rest_until(_motion(task, s, x, y, yaw), end)
         t0 = s.start_time
-        lines = _lines(task, path(segs, x, y, yaw, t0), t0 + end)
+        lines = _lines(task, path(segs, x, y, yaw, t0), t0 + end) + _scan_readings(task, rubric.robot, s,
+                                                                                     path(segs, x, y, yaw, t0), t0 + end)
         if after is None:
             runs[s.name] = _in_world(rubric.robot, s, run(segs, x0=x, y0=y, yaw0=yaw, t0=t0, lines=lines,
                                                           info=RunInfo(exit_code=0, status="exited", ended_s=t0 + end)))
@@ -163,8 +185,8 @@ def _scores(task: str, after: str | None, announced: bool = True) -> dict[str, C
 
 # The tasks that drive a robot, each with a correct motion in ``_motion`` (a task added later needs one there).
 DRIVING_TASKS = (
-    "figure_of_eight", "husky_distance", "move_circle", "move_distance", "move_distance_launch", "move_square",
-    "mover_odom_square", "mover_timed_square", "obstacle_stop", "odom_subscriber", "square_odom_launch",
+    "figure_of_eight", "husky_distance", "lidar_distance", "move_circle", "move_distance", "move_distance_launch",
+    "move_square", "mover_odom_square", "mover_timed_square", "obstacle_stop", "odom_subscriber", "square_odom_launch",
     "turtle_circle", "turtle_clean", "turtle_goal", "turtle_launch", "turtle_move", "turtle_rotate", "turtle_triangle",
 )
 CRITERIA = [(task, c.id, after) for task in DRIVING_TASKS for c in RUBRICS[task].criteria
