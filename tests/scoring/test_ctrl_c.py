@@ -163,8 +163,8 @@ def _scores(task: str, after: str | None, announced: bool = True) -> dict[str, C
         x, y, yaw = _start(rubric.robot, s)
         segs = _rest_until(_motion(task, s, x, y, yaw), end)
         t0 = s.start_time
-        lines = _lines(task, path(segs, x, y, yaw, t0), t0 + end) + _scan_readings(task, rubric.robot, s,
-                                                                                     path(segs, x, y, yaw, t0), t0 + end)
+        odom = path(segs, x, y, yaw, t0)
+        lines = _lines(task, odom, t0 + end) + _scan_readings(task, rubric.robot, s, odom, t0 + end)
         if after is None:
             runs[s.name] = _in_world(rubric.robot, s, run(segs, x0=x, y0=y, yaw0=yaw, t0=t0, lines=lines,
                                                           info=RunInfo(exit_code=0, status="exited", ended_s=t0 + end)))
