@@ -20,6 +20,9 @@ def hint_for(message: str, workspace: Workspace) -> str:
     if match := re.search(r"launch configuration '([^']+)' does not exist", message):
         return (f"Declare it before it is used: DeclareLaunchArgument('{match[1]}', default_value=...) in Python, "
                 f'<arg name="{match[1]}" default="..."/> in XML.')
+    if "[Errno 27] File too large" in message:
+        return ("The launch file printed (or wrote) more than rosgrade lets it while it is read; print less, and "
+                "only from the nodes it starts.")
     if match := re.search(r"missing required argument '([^']+)'", message):
         return f"Give it a value: {match[1]}:=VALUE after the launch file (or a default_value in the file)."
     return ""

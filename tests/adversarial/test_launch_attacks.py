@@ -25,6 +25,11 @@ ATTACKS = {
     "absent_import": "import com2009_secret_helpers\n" + HEAD,
     "write_outside": HEAD + ("def generate_launch_description():\n"
                              "    open({target!r}, 'w').write('pwned')\n    return LaunchDescription([])\n"),
+    "read_outside": HEAD + ("def generate_launch_description():\n"
+                            "    secret = open({secret!r}).read()\n"
+                            "    return LaunchDescription([Node(package='turtlesim', executable='turtlesim_node', "
+                            "name=secret)])\n"),
+    "print_flood": HEAD + ("def generate_launch_description():\n    while True:\n        print('x' * 65536)\n"),
 }
 
 
@@ -35,10 +40,12 @@ def results(tmp_path_factory: pytest.TempPathFactory) -> dict[str, tuple[object,
     (package / "launch").mkdir(parents=True)
     (package / "package.xml").write_text(PACKAGE_XML)
     target = root / "outside.txt"
+    secret = tmp_path_factory.mktemp("grader_side") / "answers.txt"
+    secret.write_text("the_answers")
     found: dict[str, tuple[object, float]] = {}
     for name, text in ATTACKS.items():
         path = package / "launch" / f"{name}.launch.py"
-        path.write_text(text.format(target=str(target)) if "{target" in text else text)
+        path.write_text(text.replace("{target!r}", repr(str(target))).replace("{secret!r}", repr(str(secret))))
         start = time.monotonic()
         try:
             outcome: object = evaluate(path, read_workspace(root), []).result
@@ -82,3 +89,18 @@ def test_absent_import_is_named(results: dict) -> None:
 def test_writing_outside_the_submission_fails_and_writes_nothing(results: dict) -> None:
     assert _message(results["write_outside"][0])
     assert not Path(results["_target"][0]).exists()
+
+
+@pytest.mark.slow
+def test_reading_outside_the_submission_finds_nothing(results: dict) -> None:
+    message = _message(results["read_outside"][0])
+    assert "No such file or directory" in message or "Permission denied" in message
+    assert "the_answers" not in message
+
+
+@pytest.mark.slow
+def test_endless_output_is_bounded(results: dict) -> None:
+    outcome, took = results["print_flood"]
+    assert "File too large" in _message(outcome)  # its output stops at the file-size limit
+    assert took < LIMITS.wall_s + 5
+    assert len(_message(outcome)) < 10_000
