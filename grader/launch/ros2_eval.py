@@ -43,13 +43,14 @@ def _kill(popen: subprocess.Popen[bytes]) -> None:
     popen.wait()
 
 
-def _read(fd: int, popen: subprocess.Popen[bytes], deadline: float) -> tuple[bytes, str | None]:
+def _read(fd: int, popen: subprocess.Popen[bytes], limits: Limits) -> tuple[bytes, str | None]:
     """Everything written to the pipe until it closes, or why reading stopped."""
     data = bytearray()
+    deadline = time.monotonic() + limits.wall_s
     while True:
         left = deadline - time.monotonic()
         if left <= 0:
-            return bytes(data), f"did not finish within {LIMITS.wall_s:g} s (a loop that never ends?)"
+            return bytes(data), f"did not finish within {limits.wall_s:g} s (a loop that never ends?)"
         ready, _, _ = select.select([fd], [], [], min(left, 0.5))
         if not ready:
             continue
@@ -61,7 +62,8 @@ def _read(fd: int, popen: subprocess.Popen[bytes], deadline: float) -> tuple[byt
             return bytes(data), f"described more than {MAX_RESULT_BYTES >> 20} MB of processes"
 
 
-def evaluate(file: Path, workspace: Workspace, arguments: list[tuple[str, str]], show_args: bool = False) -> Evaluation:
+def evaluate(file: Path, workspace: Workspace, arguments: list[tuple[str, str]], show_args: bool = False,
+             limits: Limits = LIMITS) -> Evaluation:
     """Run launch.rosgrade_evaluate on `file` confined, with the workspace's packages as the install it sees."""
     file = file.resolve()
     with tempfile.TemporaryDirectory(prefix="rosgrade-launch-") as tmp:
@@ -70,7 +72,7 @@ def evaluate(file: Path, workspace: Workspace, arguments: list[tuple[str, str]],
         if show_args:
             command.append("--show-args")
         try:
-            plan = confine.plan(command, file, workdir / "home", LIMITS.file_mb, (workspace.root.resolve(),))
+            plan = confine.plan(command, file, workdir / "home", limits.file_mb, (workspace.root.resolve(),))
         except confine.ConfineError as exc:
             raise Ros2LaunchError(str(exc)) from None
         (workdir / "home").mkdir(exist_ok=True)
@@ -80,7 +82,7 @@ def evaluate(file: Path, workspace: Workspace, arguments: list[tuple[str, str]],
         env.pop("ROS_MASTER_URI", None)
         env.update(ROSGRADE_LAUNCH_FD=str(write_fd), ROSGRADE_LAUNCH_INDEX=json.dumps(launch_index(workspace)),
                    ROS_DISTRO="jazzy", ROS_VERSION="2")
-        pairs = rlimit_pairs(LIMITS, LIMITS.processes if plan.uid is not None or plan.sandboxed else None)
+        pairs = rlimit_pairs(limits, limits.processes if plan.uid is not None or plan.sandboxed else None)
         uid = None if plan.sandboxed else plan.uid
         log_path = workdir / "output.txt"
         with open(log_path, "wb") as log:
@@ -89,7 +91,7 @@ def evaluate(file: Path, workspace: Workspace, arguments: list[tuple[str, str]],
                                      preexec_fn=lambda: _child_setup(pairs, uid))
         os.close(write_fd)
         try:
-            data, stopped = _read(read_fd, popen, time.monotonic() + LIMITS.wall_s)
+            data, stopped = _read(read_fd, popen, limits)
         finally:
             os.close(read_fd)
             if popen.poll() is None:
@@ -102,7 +104,7 @@ def evaluate(file: Path, workspace: Workspace, arguments: list[tuple[str, str]],
     if stopped is not None:
         raise Ros2LaunchError(f"{file.name}: the launch file {stopped}; rosgrade stopped it")
     if popen.returncode and not data:
-        reason = _ended(popen.returncode)
+        reason = _ended(popen.returncode, limits)
         raise Ros2LaunchError(f"{file.name}: reading the launch file {reason} before it described anything"
                               + (f"; it printed:\n{output.strip()}" if output.strip() else ""))
     try:
@@ -113,9 +115,9 @@ def evaluate(file: Path, workspace: Workspace, arguments: list[tuple[str, str]],
     return Evaluation(result, output)
 
 
-def _ended(code: int) -> str:
+def _ended(code: int, limits: Limits) -> str:
     if code == -signal.SIGKILL or code == 128 + signal.SIGKILL:
         return "was killed (over its memory or CPU limit)"
     if code in (-signal.SIGXCPU, 128 + signal.SIGXCPU):
-        return f"used more than {LIMITS.cpu_s:g} s of CPU"
+        return f"used more than {limits.cpu_s:g} s of CPU"
     return f"ended with exit code {code}"

@@ -7,11 +7,14 @@ from pathlib import Path
 import pytest
 
 from grader.launch.ros2_eval import LIMITS, Ros2LaunchError, evaluate
+from grader.runtime.spec import Limits
 from grader.workspace import read_workspace
 
 PACKAGE_XML = ('<?xml version="1.0"?><package format="3"><name>evil_pkg</name><version>0.0.0</version>'
                '<description>x</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>'
                '<export><build_type>ament_python</build_type></export></package>')
+# The grader's limits, with a shorter wall time and CPU time so that the endless loop costs the suite 3 s, not 20.
+SHORT = Limits(wall_s=3.0, cpu_s=2.0, memory_mb=LIMITS.memory_mb, processes=LIMITS.processes, file_mb=LIMITS.file_mb)
 HEAD = "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
 ATTACKS = {
     "loop": HEAD + "def generate_launch_description():\n    while True:\n        pass\n",
@@ -48,7 +51,7 @@ def results(tmp_path_factory: pytest.TempPathFactory) -> dict[str, tuple[object,
         path.write_text(text.replace("{target!r}", repr(str(target))).replace("{secret!r}", repr(str(secret))))
         start = time.monotonic()
         try:
-            outcome: object = evaluate(path, read_workspace(root), []).result
+            outcome: object = evaluate(path, read_workspace(root), [], limits=SHORT).result
         except Ros2LaunchError as exc:
             outcome = exc
         found[name] = (outcome, time.monotonic() - start)
@@ -67,7 +70,7 @@ def _message(outcome: object) -> str:
 def test_endless_loop_is_stopped_in_bounded_time(results: dict) -> None:
     outcome, took = results["loop"]
     assert "did not finish" in _message(outcome) or "CPU" in _message(outcome)
-    assert took < LIMITS.wall_s + 5
+    assert took < SHORT.wall_s + 5
 
 
 @pytest.mark.slow
@@ -102,5 +105,5 @@ def test_reading_outside_the_submission_finds_nothing(results: dict) -> None:
 def test_endless_output_is_bounded(results: dict) -> None:
     outcome, took = results["print_flood"]
     assert "File too large" in _message(outcome)  # its output stops at the file-size limit
-    assert took < LIMITS.wall_s + 5
+    assert took < SHORT.wall_s + 5
     assert len(_message(outcome)) < 10_000
