@@ -1,5 +1,6 @@
-"""Hostile action servers and clients: a server flooding feedback, a server that never answers a goal, a client
-sending goals without end. Each ends in a recorded status with a plain message, in bounded time."""
+"""Hostile action servers and clients: a server flooding feedback, a server that never answers a goal, clients
+(actionlib's and rclpy's) sending goals without end. Each ends in a recorded status with a plain message, in bounded
+time."""
 from __future__ import annotations
 
 import dataclasses
@@ -74,3 +75,13 @@ def test_a_client_sending_goals_without_end_is_stopped_by_the_wall_clock_budget(
     printed = [text for _, stream, text in recording.output_lines() if stream == "stdout"]
     assert printed and printed[0] == "goals 100"
     assert result.wall_s < 8.0
+
+
+def test_an_rclpy_client_sending_goals_without_end_pays_sim_time_for_each(tmp_path):
+    """Each goal is a send_goal call (a library-call quantum of sim time and a routed call): a few thousand goals in
+    the run's seconds, the run ending on time."""
+    result, recording = _run("action_goal_flood_ros2", tmp_path, "ros2", Scenario(duration=4.0))
+    assert result.nodes[0].status == "stopped_at_end"
+    printed = [text for _, stream, text in recording.output_lines() if stream == "stdout"]
+    assert printed and 1000 <= int(printed[-1].split()[1]) <= 4000
+    assert result.wall_s < LIMITS.wall_s
