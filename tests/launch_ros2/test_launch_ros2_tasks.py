@@ -1,9 +1,13 @@
-"""A task started from a ROS 2 launch file ([launch] with a .launch.py): move_distance_launch's distance argument
-reaches the node as an argument or as a parameter (a --params-file launch_ros writes) and scores full marks; a
-launch file that hard-codes the distance loses exactly stop_position; recordings repeat bit for bit."""
+"""Tasks started from a ROS 2 launch file ([launch] with a .launch.py): move_distance_launch's distance argument
+reaches the node as an argument or as a parameter (a --params-file launch_ros writes) and scores full marks, a
+launch file that hard-codes the distance loses exactly stop_position; square_odom_launch's two nodes from one launch
+file in the ROS 2 reference package score full marks, a launch file that forgets the odometry printer loses exactly
+the printing criteria; recordings repeat bit for bit."""
 from __future__ import annotations
 
 from pathlib import Path
+
+import shutil
 
 import pytest
 
@@ -11,20 +15,45 @@ from grader.grading import grade_task
 from grader.rubric import load_rubric
 from grader.report import TaskReport
 
-pytestmark = pytest.mark.slow  # four graded runs of two scenarios each, about 20 s
+pytestmark = pytest.mark.slow  # six graded tasks of two scenarios each, about 50 s
 
 ROOT = Path(__file__).resolve().parents[2]
 SUBMISSIONS = Path(__file__).resolve().parent / "submissions"
 
 
+def _ros2_rubric(folder: Path, task: str, launch_file: str):
+    """The task's rubric with its launch file named as a ROS 2 package names it (FILE.py)."""
+    text = (ROOT / "rubrics" / f"{task}.toml").read_text()
+    (folder / f"{task}.toml").write_text(text.replace(f'file = "{launch_file}"', f'file = "{launch_file}.py"'))
+    return load_rubric(folder / f"{task}.toml")
+
+
 @pytest.fixture(scope="module")
 def rubric(tmp_path_factory: pytest.TempPathFactory):
-    """move_distance_launch with the launch file named as a ROS 2 package names it."""
-    folder = tmp_path_factory.mktemp("rubric")
-    text = (ROOT / "rubrics" / "move_distance_launch.toml").read_text()
-    (folder / "move_distance_launch.toml").write_text(
-        text.replace('file = "move_turtlebot.launch"', 'file = "move_turtlebot.launch.py"'))
-    return load_rubric(folder / "move_distance_launch.toml")
+    return _ros2_rubric(tmp_path_factory.mktemp("rubric"), "move_distance_launch", "move_turtlebot.launch")
+
+
+def _part2_with_launch(folder: Path, launch: str) -> Path:
+    """The ROS 2 reference package part2_navigation with `launch` installed as launch/square_and_odom.launch.py
+    (listed in setup.py's data_files, as the course's packages install launch files)."""
+    package = folder / "part2_navigation"
+    shutil.copytree(ROOT / "reference_solutions_ros2" / "part2_navigation", package)
+    (package / "launch").mkdir()
+    shutil.copy(SUBMISSIONS / "square_odom" / launch, package / "launch" / "square_and_odom.launch.py")
+    setup = (package / "setup.py").read_text()
+    installed = "('share/' + package_name, ['package.xml']),"
+    assert installed in setup
+    (package / "setup.py").write_text(setup.replace(installed, installed + "\n        ('share/' + package_name + "
+                                                    "'/launch', ['launch/square_and_odom.launch.py']),"))
+    return folder
+
+
+@pytest.fixture(scope="module")
+def square_graded(tmp_path_factory: pytest.TempPathFactory) -> dict[str, TaskReport]:
+    rubric = _ros2_rubric(tmp_path_factory.mktemp("rubric"), "square_odom_launch", "square_and_odom.launch")
+    out = tmp_path_factory.mktemp("square")
+    return {launch: grade_task(_part2_with_launch(tmp_path_factory.mktemp(launch), launch), rubric, out / launch)
+            for launch in ("square_and_odom.launch.py", "square_only.launch.py")}
 
 
 @pytest.fixture(scope="module")
@@ -61,3 +90,13 @@ def test_recordings_repeat_bit_for_bit(rubric, graded: dict[str, TaskReport], tm
     again = grade_task(SUBMISSIONS / "launch_distance_param", rubric, tmp_path)
     first = graded["launch_distance_param"]
     assert [Path(p).read_bytes() for p in again.recordings] == [Path(p).read_bytes() for p in first.recordings]
+
+
+def test_two_nodes_from_one_ros2_launch_file_score_full_marks(square_graded: dict[str, TaskReport]) -> None:
+    report = square_graded["square_and_odom.launch.py"]
+    assert _lost(report) == set()
+    assert report.score == report.max_score
+
+
+def test_a_forgotten_odometry_printer_loses_exactly_the_printing_criteria(square_graded: dict[str, TaskReport]) -> None:
+    assert _lost(square_graded["square_only.launch.py"]) == {"pose_output", "output_rate"}
