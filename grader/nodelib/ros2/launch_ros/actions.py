@@ -11,6 +11,8 @@ from launch.core import Action, LaunchContext, SubstitutionFailure, normalize_to
 from launch_ros import params
 from launch_ros.parameter_descriptions import Parameter, ParameterFile
 from launch_ros.substitutions import ExecutableInPackage
+from rclpy.exceptions import InvalidNamespaceException
+from rclpy.names import validate_namespace, validate_node_name
 from ament_index_python.packages import index
 
 __all__ = ["Node", "PushROSNamespace", "PushRosNamespace", "SetParameter", "SetRemap"]
@@ -65,10 +67,12 @@ class Node(ExecuteProcess):
         args.append("--ros-args")
         name = None if self.node_name is None else perform_substitutions(context, self.node_name)
         if name is not None:
+            validate_node_name(name)
             args += ["-r", f"__node:={name}"]
         ns = None if self.node_namespace is None else perform_substitutions(context, self.node_namespace)
         ns = absolute(prefix_namespace(context.launch_configurations.get("ros_namespace"), ns))
         if ns is not None:
+            validate_namespace(ns)
             args += ["-r", f"__ns:={ns}"]
         full = prefix_namespace(ns or "", name or UNSPECIFIED_NAME) if ns is not None else (name or UNSPECIFIED_NAME)
         full_known = full if name is not None and ns is not None else None
@@ -116,9 +120,11 @@ class PushRosNamespace(Action):
         pushed = perform_substitutions(context, self.namespace)
         previous = context.launch_configurations.get("ros_namespace")
         namespace = absolute(prefix_namespace(previous, pushed))
-        if namespace is None or any(not (c.isalnum() or c in "_/~{}") for c in namespace):
+        try:
+            validate_namespace(namespace or "")
+        except InvalidNamespaceException:
             raise SubstitutionFailure(f"The resulting namespace is invalid: [previous_namespace='{previous}', "
-                                      f"pushed_namespace='{pushed}']")
+                                      f"pushed_namespace='{pushed}']") from None
         context.launch_configurations["ros_namespace"] = namespace
 
 
