@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 
 import pytest
@@ -95,3 +96,25 @@ def test_roslaunch_xml_still_needs_nodes_or_dump_params(capsys: pytest.CaptureFi
         / "hello_world" / "launch" / "move_turtlebot.launch"
     assert main(["launch", str(ros1)]) == 2
     assert "--nodes or --dump-params" in capsys.readouterr().err
+
+
+def test_an_external_node_that_needs_xacro_is_listed_not_evaluated(tmp_path: Path,
+                                                                  capsys: pytest.CaptureFixture[str]) -> None:
+    shutil.copytree(WS / "course_pkg", tmp_path / "course_pkg")
+    launch = tmp_path / "course_pkg" / "launch" / "with_description.launch.py"
+    launch.write_text(
+        "from launch import LaunchDescription\nfrom launch.substitutions import Command\n"
+        "from launch_ros.actions import Node\nfrom launch_ros.parameter_descriptions import ParameterValue\n\n\n"
+        "def generate_launch_description():\n"
+        "    description = ParameterValue(Command(['xacro ', '/opt/ros/jazzy/share/turtlebot3_description/urdf/"
+        "turtlebot3_waffle.urdf']), value_type=str)\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='robot_state_publisher', executable='robot_state_publisher',\n"
+        "             parameters=[{'robot_description': description}]),\n"
+        "        Node(package='course_pkg', executable='mover', name='mover'),\n"
+        "    ])\n")
+    assert main(["launch", str(launch), "--nodes"]) == 0
+    assert capsys.readouterr().out == (
+        "robot_state_publisher (the name its code gives it)  (robot_state_publisher robot_state_publisher) "
+        "(external: not run by rosgrade)\n"
+        "/mover  (course_pkg mover)\n")

@@ -199,11 +199,25 @@ class _NotRun(Substitution):
         raise SubstitutionFailure(f"{type(self).__name__} {self.what}")
 
 
-class Command(_NotRun):
-    """Command output: rosgrade does not run programs while reading a launch file."""
+class Command(Substitution):
+    """A command's output: `cat FILE` is read as cat would; rosgrade runs no other program while reading a launch
+    file (xacro included)."""
 
-    what = ("runs a program while the launch file is read (xacro, cat); rosgrade does not run programs then: pass the "
-            "file's path or its content read in Python instead")
+    def __init__(self, command: Any, *, on_stderr: Any = "fail") -> None:
+        self.command = normalize_to_list_of_substitutions(command)
+
+    def perform(self, context: LaunchContext) -> str:
+        words = perform_substitutions(context, self.command).split()
+        if len(words) == 2 and words[0] == "cat":
+            try:
+                with open(words[1], encoding="utf-8", errors="replace") as handle:
+                    return handle.read()
+            except OSError as exc:
+                raise SubstitutionFailure(f"executed command failed. Command: {' '.join(words)}\n"
+                                          f"Captured stderr output: cat: {words[1]}: {exc.strerror}") from None
+        raise SubstitutionFailure(f"Command {' '.join(words[:1])!r} would run a program while the launch file is "
+                                  "read; rosgrade does not run programs then (only `cat FILE` is read): pass the "
+                                  "file's path or its content read in Python instead")
 
 
 class FindExecutable(_NotRun):
