@@ -14,11 +14,12 @@ setup(
     zip_safe=True,
     maintainer='rosgrade',
     maintainer_email='rosgrade@example.org',
-    description='ROS 2 reference solution for the service tutorial (AddTwoInts server)',
+    description='ROS 2 reference solution for the service tutorial (AddTwoInts server and client)',
     license='MIT',
     entry_points={
         'console_scripts': [
             'add_two_ints_server = py_srvcli.add_two_ints_server:main',
+            'add_two_ints_client = py_srvcli.add_two_ints_client:main',
         ],
     },
 )

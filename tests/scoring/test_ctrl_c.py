@@ -207,7 +207,7 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     assert {c for _, c in shutdown} == {"shutdown_stop"}
     assert set(RUBRICS) - set(DRIVING_TASKS) == {  # compared on their own below
         "add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci", "fibonacci_client",
-        "explore_forward", "turtle_spawn_draw"}
+        "explore_forward", "turtle_spawn_draw", "add_two_ints_client"}
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:
@@ -448,5 +448,28 @@ def _explore_forward(ctrl_c: bool) -> dict[str, RunData]:
 def test_ctrl_c_after_the_goals_changes_no_explore_forward_credit(criterion: str) -> None:
     plain, interrupted = (next(c for c in score_task(RUBRICS["explore_forward"], _explore_forward(ctrl_c)).criteria
                                if c.id == criterion) for ctrl_c in (False, True))
+    assert plain.score == plain.max_score, plain.feedback
+    assert interrupted.score == plain.score, interrupted.feedback
+
+
+def _add_two_ints_client(ctrl_c: bool) -> dict[str, RunData]:
+    """A correct client: 2 and 3 from its arguments, the grader's server's sum logged; with Ctrl+C at the end, it logs
+    nonsense after it."""
+    runs = {}
+    for s in RUBRICS["add_two_ints_client"].scenarios:
+        t0, end = s.start_time, s.duration
+        call = ServiceCall(t0 + 0.5, "/add_two_ints", {"a": 2, "b": 3}, {"sum": 5})
+        lines = [OutputLine(t0 + 0.51, "rosout", "Result of add_two_ints: for 2 + 3 = 5", "INFO")]
+        late = [OutputLine(t0 + end + 0.5, "rosout", "nonsense", "INFO")] if ctrl_c else []
+        data = run([(end + (AFTER_S if ctrl_c else 0.0), 0.0, 0.0)], t0=t0,
+                   info=RunInfo(shutdown_requested_s=t0 + end if ctrl_c else None), shutdown_at=end if ctrl_c else None)
+        runs[s.name] = replace(data, service_calls=(call,), lines=tuple(lines + late))
+    return runs
+
+
+@pytest.mark.parametrize("criterion", [c.id for c in RUBRICS["add_two_ints_client"].criteria])
+def test_ctrl_c_after_the_response_changes_no_add_client_credit(criterion: str) -> None:
+    plain, interrupted = (next(c for c in score_task(RUBRICS["add_two_ints_client"], _add_two_ints_client(ctrl_c))
+                               .criteria if c.id == criterion) for ctrl_c in (False, True))
     assert plain.score == plain.max_score, plain.feedback
     assert interrupted.score == plain.score, interrupted.feedback

@@ -34,6 +34,7 @@ CONTRACT = {
     "number_game_client": ["sends_request", "reports_response"],
     "fibonacci": ["accepts_goal", "feedback", "result", "cancel_stops"],
     "fibonacci_client": ["sends_goal", "reports_feedback", "reports_result"],
+    "add_two_ints_client": ["sends_request", "reports_response"],
     "explore_forward": ["accepts_goal", "feedback", "stops_at_distance", "result", "cancel_stops", "cancel_halts"],
     "turtle_spawn_draw": ["spawned", "pens", "figure"],
     "lidar_distance": ["distances", "rate"],
