@@ -12,9 +12,11 @@ from grader.metrics.run import RunData
 
 
 class Params(TrajectoryParams):
-    """Which zones count (None: all of the world's) and the side of the floor cells counted as visited."""
+    """Which zones count (None: all of the world's), until when (seconds after the start; None: the whole run), and
+    the side of the floor cells counted as visited."""
 
     zones: list[str] | None = None
+    until_s: float | None = Field(None, gt=0)
     cell_size: float = Field(0.5, gt=0)
 
 
@@ -24,6 +26,8 @@ def measure(run: RunData, params: Params) -> Measurement:
     if len(traj) == 0:
         raise MetricError("the recording has no poses to locate the robot")
     targets = zones(run, params.zones)
+    if params.until_s is not None:
+        traj = traj.between(end=run.start_time + params.until_s)
     reached: dict[str, float] = {}
     cells: set[tuple[int, int]] = set()
     for t, x, y in zip(traj.t.tolist(), traj.x.tolist(), traj.y.tolist()):

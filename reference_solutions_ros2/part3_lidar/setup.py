@@ -20,6 +20,7 @@ setup(
         'console_scripts': [
             'obstacle_stop = part3_lidar.obstacle_stop:main',
             'lidar_distance = part3_lidar.lidar_distance:main',
+            'obstacle_avoidance = part3_lidar.obstacle_avoidance:main',
         ],
     },
 )

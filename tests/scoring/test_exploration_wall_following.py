@@ -34,6 +34,11 @@ def test_zones_reached_in_order_with_their_times() -> None:
     assert m["zone_fraction"] == 0.25 and m["cells_visited"] >= 5
 
 
+def test_a_zone_reached_after_until_s_does_not_count() -> None:
+    m = explore(_in(ARENA, [(15.0, 0.2, 0.0)], yaw0=math.pi / 4), ExplorationParams(until_s=10.0))
+    assert (m["zones_reached"], m["zones_missed"]) == (0, "north_west, north_east, south_west, south_east")
+
+
 def test_only_the_named_zones_count_and_an_unknown_zone_is_named() -> None:
     m = explore(_in(ARENA, [(15.0, 0.2, 0.0)], yaw0=math.pi / 4), ExplorationParams(zones=["south_west"]))
     assert (m["zones_reached"], m["n_zones"], m["zones_missed"]) == (0, 1, "south_west")
