@@ -86,6 +86,9 @@ def _motion(task: str, s: Scenario, x: float, y: float, yaw: float) -> list[Segm
     if task == "obstacle_stop":  # straight ahead until /scan reads the wall 0.5 m ahead
         free = scan_ahead(_in_world(RUBRICS[task].robot, s, run([])), x, y, yaw)
         return [((free - 0.5) / 0.2, 0.2, 0.0)]
+    if task == "obstacle_avoidance":  # through the four corner zones, then turning on the spot until 90 s
+        tour = _to(x, y, yaw, [(2.0, 2.0), (-2.0, 2.0), (-2.0, -2.0), (2.0, -2.0)], 0.22, 0.8)
+        return [*tour, (90.0 - sum(d for d, _, _ in tour), 0.0, 0.5)]
     if task == "lidar_distance":  # the grader turns the robot (the scenario's script); the node only prints
         return [(1.0, 0.0, 0.0), (4.0, 0.0, 0.3), (7.0, 0.0, -0.3)]
     if task == "figure_of_eight":  # two 1 m loops of 30 s each, anticlockwise then clockwise
@@ -186,7 +189,8 @@ def _scores(task: str, after: str | None, announced: bool = True) -> dict[str, C
 # The tasks that drive a robot, each with a correct motion in ``_motion`` (a task added later needs one there).
 DRIVING_TASKS = (
     "figure_of_eight", "husky_distance", "lidar_distance", "move_circle", "move_distance", "move_distance_launch",
-    "move_square", "mover_odom_square", "mover_timed_square", "obstacle_stop", "odom_subscriber", "square_odom_launch",
+    "move_square", "mover_odom_square", "mover_timed_square", "obstacle_avoidance", "obstacle_stop", "odom_subscriber",
+    "square_odom_launch",
     "turtle_circle", "turtle_clean", "turtle_goal", "turtle_launch", "turtle_move", "turtle_rotate", "turtle_triangle",
 )
 CRITERIA = [(task, c.id, after) for task in DRIVING_TASKS for c in RUBRICS[task].criteria

@@ -38,6 +38,7 @@ CONTRACT = {
     "explore_forward": ["accepts_goal", "feedback", "stops_at_distance", "result", "cancel_stops", "cancel_halts"],
     "turtle_spawn_draw": ["spawned", "pens", "figure"],
     "lidar_distance": ["distances", "rate"],
+    "obstacle_avoidance": ["zones", "no_collision", "stops_at_end"],
 }
 
 MINIMAL = '''
