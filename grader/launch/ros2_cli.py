@@ -46,7 +46,8 @@ def find_installed(workspace_dir: Path, package: str, file_name: str) -> Path:
     found = workspace.package(package)
     if found is None:
         raise Ros2LaunchError(f"Package '{package}' not found: \"package '{package}' not found, searching: "
-                              f"['/opt/ros/jazzy']\" (no package.xml with <name>{package}</name> under {workspace_dir})")
+                              f"['/opt/ros/jazzy']\" (no package.xml with <name>{package}</name> under "
+                              f"{workspace_dir})")
     candidates = sorted(p for p in found.folder.rglob(file_name) if "build" not in p.parts and "install" not in p.parts)
     for path in candidates:
         if installed(found, path):
@@ -80,6 +81,17 @@ def _trigger(process: dict[str, Any]) -> str:
     return f"  [{', '.join(parts)}]" if parts else ""
 
 
+def external_include_notes(result: dict[str, Any]) -> list[str]:
+    """What the launch file includes from packages rosgrade provides itself (a simulator's world launch file)."""
+    notes = []
+    for include in result.get("external_includes", []):
+        given = " ".join(f"{k}:={v}" for k, v in include["arguments"].items())
+        notes.append(f"includes {include['package']}'s {Path(include['file']).name}{' ' + given if given else ''}: "
+                     "that package is not the submission's; rosgrade provides the simulation itself (a task's world "
+                     "and start pose are its rubric's), so the include starts nothing here")
+    return notes
+
+
 def nodes_text(result: dict[str, Any]) -> str:
     """One line per process launch would start, in its start order."""
     lines = []
@@ -98,7 +110,8 @@ def args_text(arguments: list[dict[str, Any]]) -> str:
     """The arguments, as `ros2 launch --show-args` prints them."""
     text = "Arguments (pass arguments as '<name>:=<value>'):\n"
     for argument in arguments:
-        text += f"\n    '{argument['name']}':{'*' if argument['conditional'] else ''}\n        {argument['description']}\n"
+        star = "*" if argument["conditional"] else ""
+        text += f"\n    '{argument['name']}':{star}\n        {argument['description']}\n"
         if argument["default"] is not None:
             text += f"        (default: {argument['default']})\n"
     if not arguments:
@@ -128,6 +141,7 @@ def run(file: Path, workspace_dir: Path | None, values: dict[str, str], mode: st
              "changes nothing unless a LaunchConfiguration reads it)" for name, value in values.items()
              if name not in declared]
     notes += [f"[INFO] [launch.user]: {log['text']}" for log in result.get("logs", [])]
+    notes += external_include_notes(result)
     if mode == "json":
         return json.dumps(result, indent=2) + "\n", notes
     return nodes_text(result), notes

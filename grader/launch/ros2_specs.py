@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from grader.launch.model import LaunchError
+from grader.launch.ros2_cli import external_include_notes
 from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_eval import Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed
@@ -60,7 +61,8 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
         hint = hint_for(error["message"], workspace)
         raise LaunchError(f"{file.name}: [ERROR] [launch]: {error['message']}{where}" + (f" {hint}" if hint else ""))
     declared = {a["name"] for a in result.get("arguments", [])}
-    findings = [f"{file.name} declares no argument {name}, so `ros2 launch` ignored the task's {name}:={value}: "
+    findings = [f"{file.name} {note}" for note in external_include_notes(result)]
+    findings += [f"{file.name} declares no argument {name}, so `ros2 launch` ignored the task's {name}:={value}: "
                 f"declare it with DeclareLaunchArgument('{name}') and use LaunchConfiguration('{name}') where the "
                 "value is needed." for name, value in args.items() if name not in declared]
     specs: list[NodeSpec] = []

@@ -23,8 +23,9 @@ ATTACKS = {
         "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
         "def generate_launch_description():\n"
         "    return LaunchDescription([IncludeLaunchDescription(PythonLaunchDescriptionSource(__file__))])\n"),
-    "many_nodes": HEAD + ("def generate_launch_description():\n    return LaunchDescription("
-                          "[Node(package='turtlesim', executable='turtlesim_node', name=f'n{i}') for i in range(10000)])\n"),
+    "many_nodes": HEAD + ("def generate_launch_description():\n    return LaunchDescription(["
+                          "Node(package='turtlesim', executable='turtlesim_node', name=f'n{i}')\n"
+                          "        for i in range(10000)])\n"),
     "absent_import": "import com2009_secret_helpers\n" + HEAD,
     "write_outside": HEAD + ("def generate_launch_description():\n"
                              "    open({target!r}, 'w').write('pwned')\n    return LaunchDescription([])\n"),

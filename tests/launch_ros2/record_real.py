@@ -2,10 +2,11 @@
 
 ``python record_real.py LAUNCH_SHARE`` under an interpreter that imports real launch, launch_xml, launch_yaml,
 launch_ros and rclpy (Jazzy); LAUNCH_SHARE is that install's share/launch folder (launch_xml reads its substitution
-grammar from there). It installs nothing and fetches nothing: the case package is laid out as colcon would install it in a temporary prefix, with
-stand-in executables, and each case runs through launch's own LaunchService as `ros2 launch` runs it. A handler on
-every process start records its argv and the parameter files it is handed; errors are what launch logs. Also
-records what `ros2 launch --show-args` prints for each file. Writes cases/real_records.json.
+grammar from there). It installs nothing and fetches nothing: the case package is laid out as colcon would install
+it in a temporary prefix, with stand-in executables, and each case runs through launch's own LaunchService as
+`ros2 launch` runs it. A handler on every process start records its argv and the parameter files it is handed;
+errors are what launch logs. Also records what `ros2 launch --show-args` prints for each file. Writes
+cases/real_records.json.
 """
 from __future__ import annotations
 

@@ -118,3 +118,27 @@ def test_an_external_node_that_needs_xacro_is_listed_not_evaluated(tmp_path: Pat
         "robot_state_publisher (the name its code gives it)  (robot_state_publisher robot_state_publisher) "
         "(external: not run by rosgrade)\n"
         "/mover  (course_pkg mover)\n")
+
+
+def test_a_simulator_world_include_starts_nothing_and_is_noted(tmp_path: Path,
+                                                               capsys: pytest.CaptureFixture[str]) -> None:
+    shutil.copytree(WS / "course_pkg", tmp_path / "course_pkg")
+    launch = tmp_path / "course_pkg" / "launch" / "sim_and_node.launch.py"
+    launch.write_text(
+        "from launch import LaunchDescription\nfrom launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        "from launch.substitutions import PathJoinSubstitution\nfrom launch_ros.actions import Node\n"
+        "from launch_ros.substitutions import FindPackageShare\n\n\n"
+        "def generate_launch_description():\n"
+        "    world = PathJoinSubstitution([FindPackageShare('turtlebot3_gazebo'), 'launch', "
+        "'turtlebot3_world.launch.py'])\n"
+        "    return LaunchDescription([\n"
+        "        IncludeLaunchDescription(PythonLaunchDescriptionSource(world), launch_arguments={'x_pose': '-2.0'}"
+        ".items()),\n"
+        "        Node(package='course_pkg', executable='mover', name='mover'),\n"
+        "    ])\n")
+    assert main(["launch", str(launch), "--nodes"]) == 0
+    captured = capsys.readouterr()
+    assert captured.out == "/mover  (course_pkg mover)\n"
+    assert "includes turtlebot3_gazebo's turtlebot3_world.launch.py x_pose:=-2.0: that package is not the " \
+           "submission's; rosgrade provides the simulation itself" in captured.err

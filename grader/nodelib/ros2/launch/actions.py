@@ -5,7 +5,7 @@ import os
 from typing import Any, Callable, Optional
 
 from launch.core import (
-    Action, LaunchContext, LaunchDescriptionEntity, Substitution, TextSubstitution,
+    Action, ExternalLaunchDescription, LaunchContext, LaunchDescriptionEntity, Substitution, TextSubstitution,
     normalize_to_list_of_substitutions, perform_substitutions,
 )
 
@@ -183,6 +183,10 @@ class IncludeLaunchDescription(Action):
                 raise RuntimeError(f"Included launch description missing required argument '{argument.name}' "
                                    f"(description: '{argument.description}'), given: [{', '.join(given)}]")
         sets = [SetLaunchConfiguration(k, v) for k, v in self.launch_arguments]
+        if isinstance(description, ExternalLaunchDescription):
+            context.recorder.external_includes[-1]["arguments"] = {
+                perform_substitutions(context, k): perform_substitutions(context, v) for k, v in self.launch_arguments}
+            return sets
         return [*sets, description]
 
     def argument_names_without_context(self) -> list[str]:

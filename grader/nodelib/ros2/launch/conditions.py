@@ -3,7 +3,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from launch.core import Condition, LaunchContext, Substitution, normalize_to_list_of_substitutions, perform_substitutions
+from launch.core import (
+    Condition, LaunchContext, Substitution, normalize_to_list_of_substitutions, perform_substitutions,
+)
 
 __all__ = ["IfCondition", "InvalidConditionExpressionError", "LaunchConfigurationEquals",
            "LaunchConfigurationNotEquals", "UnlessCondition", "evaluate_condition_expression"]

@@ -20,6 +20,10 @@ class SubstitutionFailure(Exception):
     """A substitution could not be performed (real launch's launch.substitutions.SubstitutionFailure)."""
 
 
+class EvaluationError(Exception):
+    """The launch file asks for more than a launch may (processes, includes, entities)."""
+
+
 class InvalidLaunchFileError(Exception):
     """A launch file could not be loaded."""
 
@@ -206,3 +210,7 @@ class LaunchDescription(LaunchDescriptionEntity):
                 walk(entity.describe_conditional_sub_entities(), True, nested)
         walk(self.__entities, conditional_inclusion, None)
         return found
+
+
+class ExternalLaunchDescription(LaunchDescription):
+    """What an include of a launch file of a package rosgrade provides itself (a simulator's world) stands for."""

@@ -6,7 +6,7 @@ import os
 from typing import Any
 
 from launch.core import (
-    InvalidLaunchFileError, LaunchContext, LaunchDescription, normalize_to_list_of_substitutions,
+    EvaluationError, InvalidLaunchFileError, LaunchContext, LaunchDescription, normalize_to_list_of_substitutions,
     perform_substitutions,
 )
 
@@ -40,14 +40,13 @@ class LaunchDescriptionSource:
 
     def try_get_launch_description_without_context(self) -> LaunchDescription | None:
         """The included description when its path needs no launch configuration (for finding its arguments)."""
-        from launch.rosgrade_evaluate import EvaluationError
         context = LaunchContext()
         try:
             path = perform_substitutions(context, self.path_subs)
         except Exception:
             return None
         try:
-            return context.recorder.load(path, self.kind, context)
+            return context.recorder.load(path, self.kind, context, record=False)
         except EvaluationError:
             raise
         except Exception:

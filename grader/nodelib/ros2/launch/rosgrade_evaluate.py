@@ -16,7 +16,8 @@ from typing import Any
 
 from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
 from launch.core import (
-    RECORDER, Action, InvalidLaunchFileError, LaunchContext, LaunchDescription, LaunchDescriptionEntity,
+    RECORDER, Action, EvaluationError, ExternalLaunchDescription, InvalidLaunchFileError, LaunchContext,
+    LaunchDescription, LaunchDescriptionEntity,
 )
 from launch.launch_description_sources import AnyLaunchDescriptionSource, load_python_launch_file_as_module
 
@@ -26,10 +27,6 @@ MAX_LOADS = 50  # launch files read in one launch (includes): more is an include
 MAX_PARAMS_FILE_BYTES = 1 << 20
 
 
-class EvaluationError(Exception):
-    """The launch file asks for more than a launch may (processes, includes, entities)."""
-
-
 class Recorder:
     """What launch would start and log, in order, with what started each."""
 
@@ -37,6 +34,7 @@ class Recorder:
         self.processes: list[dict[str, Any]] = []
         self.logs: list[dict[str, Any]] = []
         self.events: list[dict[str, Any]] = []
+        self.external_includes: list[dict[str, Any]] = []
         self.arguments: dict[str, dict[str, Any]] = {}
         self.handlers: list[Any] = []
         self.queue: list[tuple[str, dict[str, Any], Any]] = []
@@ -91,12 +89,18 @@ class Recorder:
             text = handle.read(MAX_PARAMS_FILE_BYTES)
         return {"path": path, "generated": False, "content": text}
 
-    def load(self, path: str, kind: str, context: LaunchContext) -> LaunchDescription:
+    def load(self, path: str, kind: str, context: LaunchContext, record: bool = True) -> LaunchDescription:
         self.loads += 1
         if self.loads > MAX_LOADS:
             raise EvaluationError(f"more than {MAX_LOADS} launch files were included: {os.path.basename(path)} "
                                   "includes itself, directly or through another file")
         self.files.append(os.path.abspath(path))
+        package = _not_ours(path)
+        if package is not None:
+            if record:
+                self.external_includes.append({"package": package, "file": path, "arguments": {},
+                                               **self.trigger(context)})
+            return ExternalLaunchDescription()
         if not os.path.exists(path):
             raise InvalidLaunchFileError(f"[Errno 2] No such file or directory: '{path}'") \
                 if kind != "any" else FileNotFoundError(2, "No such file or directory", path)
@@ -166,7 +170,17 @@ class Recorder:
 
     def result(self) -> dict[str, Any]:
         return {"processes": self.processes, "logs": self.logs, "events": self.events,
-                "arguments": list(self.arguments.values())}
+                "arguments": list(self.arguments.values()), "external_includes": self.external_includes}
+
+
+def _not_ours(path: str) -> str | None:
+    """The package whose launch file `path` is when that package is not the submission's (a simulator's, turtlesim's):
+    rosgrade provides the world itself, so such an include starts nothing."""
+    from ament_index_python.packages import index
+    for name, entry in index().items():
+        if (entry.get("external") or entry.get("world")) and path.startswith(entry["share"].rstrip("/") + "/"):
+            return name
+    return None
 
 
 def _where(exc: BaseException, files: list[str]) -> str | None:
