@@ -3,9 +3,9 @@ from __future__ import annotations
 
 from grader.metrics import (
     action_client, action_goals, circle, clearance, collisions, coverage, exploration, final_pose, goal,
-    lidar_distance, log_lines, loops, number_game, param_radius, polygon, pose_print, service_client,
-    service_responses, shutdown, spawn_draw, square, stop, stop_distance, timing, turtle_rotation, turtle_stop,
-    turtle_travel, velocity, wall_following, wall_hits,
+    lidar_distance, log_lines, loops, number_game, param_radius, polygon, pose_print, rotate_absolute,
+    service_client, service_responses, shutdown, spawn_draw, square, stop, stop_distance, timing, turtle_rotation,
+    turtle_stop, turtle_travel, velocity, wall_following, wall_hits,
 )
 from grader.metrics.base import Measurement, Metric, MetricError, MetricParams, TrajectoryParams
 from grader.metrics.run import Commands, OutputLine, RunData, RunInfo, Trajectory
@@ -17,7 +17,7 @@ METRICS: dict[str, Metric] = {
         turtle_rotation.METRIC, turtle_stop.METRIC, polygon.METRIC, goal.METRIC, coverage.METRIC, wall_hits.METRIC,
         service_responses.METRIC, param_radius.METRIC, number_game.METRIC, service_client.METRIC,
         action_goals.METRIC, action_client.METRIC, collisions.METRIC, stop_distance.METRIC, clearance.METRIC,
-        spawn_draw.METRIC,
+        spawn_draw.METRIC, rotate_absolute.METRIC,
         exploration.METRIC, wall_following.METRIC, lidar_distance.METRIC,
     )
 }

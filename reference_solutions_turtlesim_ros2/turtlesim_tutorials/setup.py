@@ -25,6 +25,7 @@ setup(
             'go_to_goal = turtlesim_tutorials.go_to_goal:main',
             'clean = turtlesim_tutorials.clean:main',
             'spawn_draw = turtlesim_tutorials.spawn_draw:main',
+            'rotate_absolute = turtlesim_tutorials.rotate_absolute:main',
         ],
     },
 )

@@ -11,7 +11,7 @@ pytestmark = pytest.mark.slow
 # test_param_circle.py, test_number_game.py, test_number_game_client.py, test_fibonacci.py, test_fibonacci_client.py,
 # test_explore_forward.py, test_reference_turtlesim_ros2.py, test_add_two_ints_client.py).
 ROS2_ONLY = {"add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci", "fibonacci_client",
-             "explore_forward", "turtle_spawn_draw", "add_two_ints_client"}
+             "explore_forward", "turtle_spawn_draw", "add_two_ints_client", "turtle_rotate_absolute"}
 RUBRICS = {task: rubric for task, rubric in load_rubrics().items() if task not in ROS2_ONLY}
 TASKS = sorted(RUBRICS)
 # The TurtleBot course's solutions and the turtlesim course's live in separate folders.

@@ -18,8 +18,8 @@ pytestmark = pytest.mark.slow
 
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = ROOT / "reference_solutions_turtlesim_ros2" / "turtlesim_tutorials"
-TASKS = ("turtle_circle", "turtle_clean", "turtle_goal", "turtle_move", "turtle_rotate", "turtle_spawn_draw",
-         "turtle_triangle")
+TASKS = ("turtle_circle", "turtle_clean", "turtle_goal", "turtle_move", "turtle_rotate", "turtle_rotate_absolute",
+         "turtle_spawn_draw", "turtle_triangle")
 
 
 @pytest.fixture(scope="module")
@@ -31,7 +31,7 @@ def _task(report, task):
     return next(t for t in report.tasks if t.id == task)
 
 
-def test_the_package_is_found_as_the_seven_tasks(report):
+def test_the_package_is_found_as_the_eight_tasks(report):
     assert sorted(t.id for t in report.tasks) == sorted(TASKS)
 
 

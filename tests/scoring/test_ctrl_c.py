@@ -211,7 +211,7 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     assert {c for _, c in shutdown} == {"shutdown_stop"}
     assert set(RUBRICS) - set(DRIVING_TASKS) == {  # compared on their own below
         "add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci", "fibonacci_client",
-        "explore_forward", "turtle_spawn_draw", "add_two_ints_client"}
+        "explore_forward", "turtle_spawn_draw", "add_two_ints_client", "turtle_rotate_absolute"}
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:

@@ -37,7 +37,8 @@ def _reference_scripts(task: str) -> list[Path]:
 ROS2_TASKS = {"add_two_ints": "reference_solutions_ros2/py_srvcli", "fibonacci": "reference_solutions_ros2/py_action",
               "fibonacci_client": "reference_solutions_ros2/py_action",
               "add_two_ints_client": "reference_solutions_ros2/py_srvcli",
-              "turtle_spawn_draw": "reference_solutions_turtlesim_ros2/turtlesim_tutorials"}
+              "turtle_spawn_draw": "reference_solutions_turtlesim_ros2/turtlesim_tutorials",
+              "turtle_rotate_absolute": "reference_solutions_turtlesim_ros2/turtlesim_tutorials"}
 # ROS 2-only tasks whose reference is a COM2009 ament_cmake package: scripts/ installed by install(PROGRAMS).
 ROS2_CMAKE_TASKS = {"param_circle": "part3_beyond_basics", "number_game": "part4_services",
                     "number_game_client": "part4_services", "explore_forward": "part5_actions"}

@@ -37,6 +37,7 @@ CONTRACT = {
     "add_two_ints_client": ["sends_request", "reports_response"],
     "explore_forward": ["accepts_goal", "feedback", "stops_at_distance", "result", "cancel_stops", "cancel_halts"],
     "turtle_spawn_draw": ["spawned", "pens", "figure"],
+    "turtle_rotate_absolute": ["reaches_angle", "uses_action", "reads_result"],
     "lidar_distance": ["distances", "rate"],
     "obstacle_avoidance": ["zones", "no_collision", "stops_at_end"],
 }
