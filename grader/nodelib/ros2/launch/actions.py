@@ -9,10 +9,10 @@ from launch.core import (
     normalize_to_list_of_substitutions, perform_substitutions,
 )
 
-__all__ = ["DeclareLaunchArgument", "EmitEvent", "ExecuteProcess", "GroupAction", "IncludeLaunchDescription",
+__all__ = ["AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteProcess", "GroupAction", "IncludeLaunchDescription",
            "LogInfo", "OpaqueFunction", "PopEnvironment", "PopLaunchConfigurations", "PushEnvironment",
-           "PushLaunchConfigurations", "RegisterEventHandler", "SetEnvironmentVariable", "SetLaunchConfiguration",
-           "Shutdown", "TimerAction", "UnsetLaunchConfiguration"]
+           "PushLaunchConfigurations", "RegisterEventHandler", "ResetLaunchConfigurations", "SetEnvironmentVariable",
+           "SetLaunchConfiguration", "Shutdown", "TimerAction", "UnsetEnvironmentVariable", "UnsetLaunchConfiguration"]
 
 
 class DeclareLaunchArgument(Action):
@@ -115,6 +115,39 @@ class SetEnvironmentVariable(Action):
         context.environment[perform_substitutions(context, self.name)] = perform_substitutions(context, self.value)
 
 
+class UnsetEnvironmentVariable(Action):
+    """Removes an environment variable for what the launch starts after it."""
+
+    def __init__(self, name: Any, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        self.name = normalize_to_list_of_substitutions(name)
+
+    def execute(self, context: LaunchContext) -> None:
+        context.environment.pop(perform_substitutions(context, self.name), None)
+
+
+class AppendEnvironmentVariable(Action):
+    """Appends (or prepends) a value to an environment variable, with the path separator."""
+
+    def __init__(self, name: Any, value: Any, *, prepend: Any = False, separator: Any = os.pathsep,
+                 **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        self.name = normalize_to_list_of_substitutions(name)
+        self.value = normalize_to_list_of_substitutions(value)
+        self.prepend = prepend
+        self.separator = normalize_to_list_of_substitutions(separator)
+
+    def execute(self, context: LaunchContext) -> None:
+        name = perform_substitutions(context, self.name)
+        value = perform_substitutions(context, self.value)
+        separator = perform_substitutions(context, self.separator)
+        prepend = self.prepend if isinstance(self.prepend, bool) else \
+            perform_substitutions(context, normalize_to_list_of_substitutions(self.prepend)).lower() in ("true", "1")
+        old = context.environment.get(name)
+        context.environment[name] = value if not old else (value + separator + old if prepend
+                                                           else old + separator + value)
+
+
 class GroupAction(Action):
     """Actions together; scoped (default) keeps their launch configurations and ROS namespace inside."""
 
@@ -134,19 +167,19 @@ class GroupAction(Action):
         if self.forwarding:
             return [PushLaunchConfigurations(), PushEnvironment(), *sets, *self.actions, PopEnvironment(),
                     PopLaunchConfigurations()]
-        return [PushLaunchConfigurations(), PushEnvironment(), _ResetLaunchConfigurations(self.launch_configurations),
+        return [PushLaunchConfigurations(), PushEnvironment(), ResetLaunchConfigurations(self.launch_configurations),
                 *self.actions, PopEnvironment(), PopLaunchConfigurations()]
 
     def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity]:
         return self.get_sub_entities()
 
 
-class _ResetLaunchConfigurations(Action):
+class ResetLaunchConfigurations(Action):
     """Clears the launch configurations but for the ones given (a non-forwarding group)."""
 
-    def __init__(self, keep: dict[Any, Any]) -> None:
-        super().__init__()
-        self.keep = keep
+    def __init__(self, launch_configurations: dict[Any, Any] | None = None, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        self.keep = dict(launch_configurations or {})
 
     def execute(self, context: LaunchContext) -> None:
         kept = {perform_substitutions(context, normalize_to_list_of_substitutions(k)):

@@ -10,8 +10,8 @@ from launch.core import (
     perform_substitutions,
 )
 
-__all__ = ["AndSubstitution", "AnonName", "Command", "EnvironmentVariable", "EqualsSubstitution", "FindExecutable",
-           "LaunchConfiguration", "LocalSubstitution", "NotSubstitution", "OrSubstitution", "PathJoinSubstitution",
+__all__ = ["AndSubstitution", "AnonName", "Command", "EnvironmentVariable", "EqualsSubstitution", "FileContent",
+           "FindExecutable", "IfElseSubstitution", "LaunchConfiguration", "NotEqualsSubstitution", "LocalSubstitution", "NotSubstitution", "OrSubstitution", "PathJoinSubstitution",
            "PythonExpression", "Substitution", "SubstitutionFailure", "TextSubstitution", "ThisLaunchFile",
            "ThisLaunchFileDir"]
 
@@ -173,6 +173,41 @@ class EqualsSubstitution(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         return str(perform_substitutions(context, self.left) == perform_substitutions(context, self.right)).lower()
+
+
+class NotEqualsSubstitution(EqualsSubstitution):
+    """'true' when the sides differ."""
+
+    def perform(self, context: LaunchContext) -> str:
+        return str(super().perform(context) == "false").lower()
+
+
+class IfElseSubstitution(Substitution):
+    """One text when the condition is true, another when false."""
+
+    def __init__(self, condition: Any, if_value: Any = "", else_value: Any = "") -> None:
+        self.condition = normalize_to_list_of_substitutions(condition)
+        self.if_value = normalize_to_list_of_substitutions(if_value)
+        self.else_value = normalize_to_list_of_substitutions(else_value)
+
+    def perform(self, context: LaunchContext) -> str:
+        chosen = self.if_value if _boolean(context, self.condition) else self.else_value
+        return perform_substitutions(context, chosen)
+
+
+class FileContent(Substitution):
+    """A file's text (an error if it cannot be read)."""
+
+    def __init__(self, path: Any) -> None:
+        self.path = normalize_to_list_of_substitutions(path)
+
+    def perform(self, context: LaunchContext) -> str:
+        path = perform_substitutions(context, self.path)
+        try:
+            with open(path, encoding="utf-8", errors="replace") as handle:
+                return handle.read()
+        except OSError:
+            raise SubstitutionFailure(f"File not found: {path}") from None
 
 
 class AnonName(Substitution):

@@ -15,7 +15,7 @@ from rclpy.exceptions import InvalidNamespaceException
 from rclpy.names import validate_namespace, validate_node_name
 from ament_index_python.packages import index
 
-__all__ = ["Node", "PushROSNamespace", "PushRosNamespace", "SetParameter", "SetRemap"]
+__all__ = ["Node", "PushROSNamespace", "PushRosNamespace", "SetParameter", "SetParametersFromFile", "SetRemap"]
 
 UNSPECIFIED_NAME = "<node_name_unspecified>"
 UNSPECIFIED_NAMESPACE = "<node_namespace_unspecified>"
@@ -176,4 +176,17 @@ class SetParameter(Action):
     def execute(self, context: LaunchContext) -> None:
         found = context.launch_configurations.get("global_params", [])
         found.extend(params.evaluate_dict(context, self.values).items())
+        context.launch_configurations["global_params"] = found
+
+
+class SetParametersFromFile(Action):
+    """A parameter file for every node after it in its scope (--params-file before the node's own)."""
+
+    def __init__(self, filename: Any, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        self.filename = normalize_to_list_of_substitutions(filename)
+
+    def execute(self, context: LaunchContext) -> None:
+        found = context.launch_configurations.get("global_params", [])
+        found.append(perform_substitutions(context, self.filename))
         context.launch_configurations["global_params"] = found
