@@ -142,3 +142,12 @@ def test_a_simulator_world_include_starts_nothing_and_is_noted(tmp_path: Path,
     assert captured.out == "/mover  (course_pkg mover)\n"
     assert "includes turtlebot3_gazebo's turtlebot3_world.launch.py x_pose:=-2.0: that package is not the " \
            "submission's; rosgrade provides the simulation itself" in captured.err
+
+
+def test_json_is_the_same_every_time(capsys: pytest.CaptureFixture[str]) -> None:
+    outputs = []
+    for _ in range(2):
+        assert main(["launch", str(LAUNCH / "params_types.launch.py"), "--json"]) == 0
+        outputs.append(capsys.readouterr().out)
+    assert outputs[0] == outputs[1]
+    assert "launch_params_1" in outputs[0]
