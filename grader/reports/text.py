@@ -89,8 +89,8 @@ def _plot_help(recording: str) -> str:
         topics = set()
     if TURTLE_POSE_TOPIC in topics:
         return (f"Add a Plot panel with paths such as {TURTLE_POSE_TOPIC}.x, {TURTLE_POSE_TOPIC}.y and "
-                "/turtle1/cmd_vel.linear.x; the report's turtlesim picture shows what the pens drew, and a Raw Messages "
-                "panel on /rosout shows your node's log.")
+                "/turtle1/cmd_vel.linear.x; the report's turtlesim picture shows what the pens drew, and a Raw "
+                "Messages panel on /rosout shows your node's log.")
     return ("Add a Plot panel with paths such as /odom.pose.pose.position.x, /odom.pose.pose.position.y "
             "and /cmd_vel.linear.x (/cmd_vel.twist.linear.x for a ROS 2 TwistStamped); a Raw Messages panel on /rosout "
             "shows your node's log.")

@@ -1,4 +1,4 @@
-"""turtlesim's ROS 2 interfaces (Pose, Color, five services, RotateAbsolute) hash as the real rosidl tool chain hashes them.
+"""turtlesim's ROS 2 interfaces (Pose, Color, five services, RotateAbsolute) hash as real rosidl hashes them.
 
 The interface files in turtlesim_ros2_interfaces/ hold the fields ros/ros_tutorials (rolling at 1.8.2, where Jazzy's
 turtlesim branched) declares in turtlesim/msg/*.msg, srv/*.srv and action/RotateAbsolute.action: names and types
@@ -33,7 +33,8 @@ def test_the_node_side_classes_carry_rosidls_hashes() -> None:
     ours = {name: json.loads(entry)[2] for name, entry in node_defs.MESSAGES.items()} | node_defs.SERVICES \
         | node_defs.ACTIONS
     real = _real()
-    assert len([name for name in real if name.startswith("turtlesim/")]) == 35  # 2 messages, 5 services of 4, an action of 13
+    # 2 messages, 5 services of 4 types, an action of 13
+    assert len([name for name in real if name.startswith("turtlesim/")]) == 35
     assert {name: ours.get(name) for name in real} == real
 
 
