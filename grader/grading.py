@@ -199,8 +199,9 @@ def _ros2_launch_nodes(folder: Path, file: Path, rubric: Rubric) -> Started:
 
 def _hidden_text(nodes: tuple[NodeSpec, ...], log: Path) -> list[str]:
     """Launched nodes whose text roslaunch would have written to a log file rather than the terminal."""
-    return [(f"{spec.script.name} wrote text, but its Node has no output='screen': ros2 launch sends that text to "
-             "~/.ros/log, not to the terminal (the grader read it either way)." if spec.flavour == ROS2 else
+    return [(f"{spec.script.name} wrote text, but its Node has no output='screen': ros2 launch shows only its "
+             "stderr (rclpy's log messages) and sends what it print()s to ~/.ros/log, not to the terminal (the grader "
+             "read it either way)." if spec.flavour == ROS2 else
              f"{spec.script.name} wrote text, but its <node> has no output=\"screen\": roslaunch sends that text to "
              "~/.ros/log, not to the terminal (the grader read it either way).")
             for index, spec in enumerate(nodes) if spec.output == "log" and node_log_path(log, index).exists()]

@@ -75,7 +75,7 @@ def test_references_score_full_marks(graded: dict[str, TaskReport], name: str) -
 
 
 def test_text_of_a_node_without_output_screen_is_said_to_go_to_the_log(graded: dict[str, TaskReport]) -> None:
-    assert any("its Node has no output='screen': ros2 launch sends that text to ~/.ros/log" in d
+    assert any("its Node has no output='screen': ros2 launch shows only its stderr" in d
                for d in graded["launch_distance"].diagnostics)
     assert not any("output=" in d for d in graded["launch_distance_param"].diagnostics)
 
