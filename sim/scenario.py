@@ -166,6 +166,34 @@ class ActionGoalSpec(_Model):
         return None if self.cancel_at is None else seconds_to_ns(self.cancel_at)
 
 
+class PublicationSpec(_Model):
+    """A message the grader publishes from ``t`` seconds after the start, as ``rostopic pub <topic> <type> <values>``
+    (rospy runs) or ``ros2 topic pub`` (rclpy runs) would. ``values`` gives the message's fields as YAML would (a
+    mapping; fields not given are zero or empty). ``once``: ``-1``/``--once``. ``rate``: ``-r`` in Hz (rostopic:
+    none by default, one latched message; ros2: 1 Hz by default). ``times``: ros2's ``-t``. ``latch``: rostopic's
+    ``-l`` (with a rate; without one it always latches)."""
+
+    t: NonNegative
+    topic: Annotated[str, Field(pattern=r"^/[A-Za-z0-9_/]+$")]
+    type: str
+    values: dict[str, JsonValue] = Field(default_factory=dict)
+    once: bool = False
+    rate: Annotated[float, Field(gt=0, le=1000)] | None = None
+    times: Annotated[int, Field(ge=1)] | None = None
+    latch: bool | None = None
+
+    @model_validator(mode="after")
+    def _one_mode(self) -> PublicationSpec:
+        if self.once and (self.rate is not None or self.times is not None):
+            raise ValueError("publications: once publishes one message; give once, or a rate and times, not both")
+        return self
+
+    @property
+    def t_ns(self) -> int:
+        """``t`` in integer nanoseconds (relative to the start)."""
+        return seconds_to_ns(self.t)
+
+
 class Scenario(_Model):
     """One run: the world starts at ``start_time`` (it has been running since 0) and lasts ``duration`` seconds after it."""
 
@@ -189,6 +217,8 @@ class Scenario(_Model):
                                            description="ROS 2 parameters the grader sets, in time order")
     action_goals: list[ActionGoalSpec] = Field(default_factory=list,
                                                description="ROS 2 action goals the grader sends, in time order")
+    publications: list[PublicationSpec] = Field(
+        default_factory=list, description="messages the grader publishes (rostopic pub / ros2 topic pub), in time order")
     command_types: list[str] | None = Field(
         None, description="velocity command types the robot's base takes, e.g. ['geometry_msgs/Twist', "
         "'geometry_msgs/TwistStamped']; None: what the run's client library's robot takes (ROS 1: Twist; "
@@ -216,11 +246,14 @@ class Scenario(_Model):
 
     @model_serializer(mode="wrap")
     def _dump(self, handler: SerializerFunctionWrapHandler) -> dict:
-        """Without an unset world or start, so a scenario without a course world is recorded as it always was."""
+        """Without an unset world or start (or no publications), so a scenario without them is recorded as it always
+        was."""
         dumped = handler(self)
         for key in ("world", "start"):
             if dumped.get(key, "") is None:
                 del dumped[key]
+        if dumped.get("publications") == []:  # likewise without publications, which came later
+            del dumped["publications"]
         return dumped
 
     @property
@@ -262,7 +295,7 @@ class Scenario(_Model):
             if goal.cancel_at is not None and not goal.t < goal.cancel_at <= self.duration:
                 raise ValueError(f"action_goals: a goal sent at {goal.t} s is cancelled at {goal.cancel_at} s; "
                                  "expected a later time within the run's duration")
-        for field_name in ("service_calls", "param_sets", "action_goals"):
+        for field_name in ("service_calls", "param_sets", "action_goals", "publications"):
             calls = [call.t for call in getattr(self, field_name)]
             if calls != sorted(calls) or (calls and calls[-1] > self.duration):
                 raise ValueError(f"{field_name} must come in time order, within the run's duration")

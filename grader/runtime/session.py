@@ -31,9 +31,8 @@ from grader.runtime.node_link import (ROBOT, Endpoint, EndpointLimitExceeded, La
                                       Publication, ServiceAnswer, ServiceCall, ServiceOffer, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
-from grader.runtime.scenario_calls import ScenarioCaller, planned_calls
-from grader.runtime.scenario_goals import planned_goals
-from grader.runtime.services import Caller, ServiceRouteError, ServiceRouter
+from grader.runtime.scenario_participant import ParticipantError, ScenarioParticipant, plan
+from grader.runtime.services import Caller, ServiceRouter
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from grader.runtime.wire import wire_for
@@ -151,11 +150,10 @@ class Session:
         self.ahead: Speculation | None = None  # the world run ahead of the node now running, until settled
         self.lookahead = Lookahead(self)
         self.services: ServiceRouter | None = None  # who serves what, and the calls in flight (grader/runtime/services)
-        self.caller: ScenarioCaller | None = None  # the scenario's own service calls
+        self.caller: ScenarioParticipant | None = None  # /rosgrade: the scenario's calls, goals, sets, publications
         try:
-            self._calls = planned_calls(spec.scenario.service_calls, self.wire, spec.scenario.param_sets)
-            self._goals = planned_goals(spec.scenario.action_goals, self.wire)
-        except ServiceRouteError as exc:
+            self._plan = plan(spec.scenario, self.wire)
+        except ParticipantError as exc:
             raise RunError(str(exc)) from None
 
     # -- public ------------------------------------------------------------------------------------------------
@@ -190,7 +188,8 @@ class Session:
             self.services = ServiceRouter(self.wire, self.world, rec.write,
                                           lambda index, item: self.nodes[index].deliveries.append(item),
                                           self._world_sample, self._take_declarations)
-            self.caller = ScenarioCaller(self._calls, self.start_ns, self.services, self.params, self._goals)
+            self.caller = ScenarioParticipant(self._plan, self.start_ns, self.services, self.params, self, rec.write,
+                                              LOST_PREFIX)
             try:
                 with timing.stage("node start-up", absorb=True):
                     for node in list(self.nodes):

@@ -1,0 +1,268 @@
+"""The grader as a publisher: a scenario's publications, each sent as ``rostopic pub`` (ROS 1) or ``ros2 topic pub``
+(ROS 2) sends one, under the grader's name (/rosgrade, origin "grader"), routed to node subscribers as a node's are.
+
+What the commands do (rostopic 1.15.15, ros2cli Jazzy, read from their sources):
+- ``rostopic pub`` without ``-r`` publishes once, latched, and stays until Ctrl+C; with ``-1`` it leaves 3 s after;
+  with ``-r RATE`` it publishes at that rate until Ctrl+C, latched only with ``-l``. Its publisher connects to
+  subscribers as any rospy publisher does (after the session's connect delay); what it publishes before is lost.
+- ``ros2 topic pub`` publishes at ``-r`` (1 Hz by default) until Ctrl+C; with ``--once`` or ``-t TIMES`` it first
+  waits for a matching subscription (checking every 0.1 s), publishes at once, then every period, and leaves 0.1 s
+  after its last message. Its QoS is the default profile: reliable, volatile (nothing is kept for late subscribers).
+"""
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+from rosbags.typesys.base import Nodetype
+
+from grader.recording import RecordingError
+from grader.runtime.node_link import ROBOT, Endpoint, Latched
+from grader.runtime.wire import Wire
+from sim.scenario import PublicationSpec
+
+CALLER_ID = "/rosgrade"
+ONCE_STAY_NS = 3_000_000_000  # rostopic pub -1 stays this long after publishing (its _ONCE_DELAY, 3 s)
+POLL_NS = 100_000_000  # ros2 topic pub checks for a matching subscription this often (DEFAULT_WAIT_TIME)
+KEEP_ALIVE_NS = 100_000_000  # ros2 topic pub stays this long after its last message (--keep-alive 0.1)
+_NUMERIC = {"bool": np.bool_, "byte": np.uint8, "char": np.uint8, "int8": np.int8, "uint8": np.uint8,
+            "int16": np.int16, "uint16": np.uint16, "int32": np.int32, "uint32": np.uint32, "int64": np.int64,
+            "uint64": np.uint64, "float32": np.float32, "float64": np.float64}
+
+
+class PublicationError(Exception):
+    """A scenario publication that cannot be made (unknown type, a field its type does not have, a bad value)."""
+
+
+class Graph(Protocol):
+    """What the publisher needs of the run: who a publisher reaches at t, and the nodes to hand messages to."""
+
+    nodes: list
+    discovery_ns: int
+
+    def receivers(self, publisher: Endpoint, t: int) -> list: ...
+
+    def ready_ns(self, publisher: Endpoint) -> int: ...
+
+
+def build_message(wire: Wire, type_name: str, values: Mapping[str, object], where: str = "") -> object:
+    """A message of ``type_name`` from a YAML-like mapping, every field not given at its zero value, as
+    ``rostopic pub`` and ``ros2 topic pub`` fill one; PublicationError names the field that does not fit."""
+    store = wire.catalog.typestore
+    name = type_name if type_name in store.fielddefs else wire.catalog.message_class(type_name).__msgtype__
+    if not isinstance(values, Mapping):
+        raise PublicationError(f"{where or type_name}: expected a mapping of fields, got {values!r}")
+    fields = dict(store.fielddefs[name][1])
+    unknown = sorted(set(values) - set(fields))
+    if unknown:
+        raise PublicationError(f"{where or type_name}: {name} has no field {unknown[0]!r}; its fields are "
+                               f"{', '.join(fields) or 'none'}")
+    built = {field: _field(wire, desc, values.get(field), f"{where}.{field}" if where else field)
+             for field, desc in fields.items()}
+    return wire.catalog.message_class(name)(**built)
+
+
+def _field(wire: Wire, desc: tuple, value: object, where: str) -> object:
+    node, detail = desc
+    if node == Nodetype.NAME:
+        return build_message(wire, detail, {} if value is None else value, where)
+    if node == Nodetype.BASE:
+        return _base(detail[0], value, where)
+    (inner, inner_detail), count = detail
+    items = list(value) if isinstance(value, (list, tuple)) else [] if value is None else None
+    if items is None:
+        raise PublicationError(f"{where}: expected a list, got {value!r}")
+    if node == Nodetype.ARRAY and value is not None and len(items) != count:
+        raise PublicationError(f"{where}: expected {count} items, got {len(items)}")
+    if node == Nodetype.ARRAY and value is None:
+        items = [None] * count
+    if inner == Nodetype.NAME:
+        return [build_message(wire, inner_detail, {} if item is None else item, f"{where}[{i}]")
+                for i, item in enumerate(items)]
+    base = inner_detail[0]
+    converted = [_base(base, item, f"{where}[{i}]") for i, item in enumerate(items)]
+    return np.array(converted, dtype=_NUMERIC[base]) if base in _NUMERIC else converted
+
+
+def _base(base: str, value: object, where: str) -> object:
+    """One field of a built-in type, as YAML gives it: ints for integers, numbers for floats, text for strings."""
+    if base in ("string", "wstring"):
+        if value is None:
+            return ""
+        if not isinstance(value, str):
+            raise PublicationError(f"{where}: expected a string, got {value!r}")
+        return value
+    if base == "bool":
+        if value is None:
+            return False
+        if not isinstance(value, bool):
+            raise PublicationError(f"{where}: expected true or false, got {value!r}")
+        return value
+    if base in ("float32", "float64"):
+        if value is None:
+            return 0.0
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise PublicationError(f"{where}: expected a number, got {value!r}")
+        return float(value)
+    if base in _NUMERIC:
+        if value is None:
+            return 0
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise PublicationError(f"{where}: expected an integer, got {value!r}")
+        info = np.iinfo(_NUMERIC[base])
+        if not info.min <= value <= info.max:
+            raise PublicationError(f"{where}: {value} does not fit a {base}")
+        return value
+    raise PublicationError(f"{where}: a {base} field cannot be given in a scenario")
+
+
+@dataclass(frozen=True)
+class PlannedPublication:
+    """A scenario publication with its message's bytes and the command's schedule, built before the run starts."""
+
+    t_ns: int  # when the command starts, relative to the start
+    topic: str
+    type: str
+    data: bytes
+    period_ns: int | None  # None: one message
+    times: int  # how many messages (0: until the run ends)
+    latch: bool
+    wait: bool  # ros2 topic pub --once/-t: wait for a matching subscription before the first message
+    stay_ns: int | None  # how long the command stays after its last message (None: until the run ends)
+    callerid: str  # /rosgrade; a later command on a topic already published is a node of its own, as in real ROS
+
+
+def planned_publications(specs: list[PublicationSpec], wire: Wire) -> list[PlannedPublication]:
+    """The scenario's publications encoded for the run's wire; PublicationError names one that cannot be made."""
+    first = {spec.topic: index for index, spec in reversed(list(enumerate(specs)))}
+    return [_planned(index, spec, wire, CALLER_ID if first[spec.topic] == index else f"{CALLER_ID}/pub{index}")
+            for index, spec in enumerate(specs)]
+
+
+def _planned(index: int, spec: PublicationSpec, wire: Wire, callerid: str) -> PlannedPublication:
+    where = f"scenario publications[{index}] on {spec.topic}"
+    try:
+        type_name = wire.canonical(spec.type)
+        data = wire.catalog.encode(type_name, build_message(wire, type_name, spec.values))
+    except (RecordingError, KeyError) as exc:
+        raise PublicationError(f"{where}: {spec.type} is not a message type the run knows ({exc})") from None
+    except PublicationError as exc:
+        raise PublicationError(f"{where}: {exc}") from None
+    if wire.name == "ros1":
+        if spec.times is not None:
+            raise PublicationError(f"{where}: rostopic pub has no -t/--times; give once, or a rate (it publishes "
+                                   "until the run ends)")
+        period = None if spec.rate is None else round(1e9 / spec.rate)
+        latch = spec.rate is None or bool(spec.latch)
+        stay = ONCE_STAY_NS if spec.once else None
+        return PlannedPublication(spec.t_ns, spec.topic, type_name, data, period, 1 if period is None else 0, latch,
+                                  False, stay, callerid)
+    if spec.latch:
+        raise PublicationError(f"{where}: latch is rostopic pub's -l; ros2 topic pub's volatile default is what "
+                               "rosgrade models for ROS 2 (remove latch)")
+    times = 1 if spec.once else spec.times or 0
+    period = round(1e9 / (spec.rate or 1.0))
+    return PlannedPublication(spec.t_ns, spec.topic, type_name, data, period, times, False, times != 0,
+                              KEEP_ALIVE_NS if times else None, callerid)
+
+
+class TopicPublisher:
+    """One ``rostopic pub`` / ``ros2 topic pub`` command in the run: its publisher, its schedule and its latch."""
+
+    def __init__(self, planned: PlannedPublication, start_ns: int, graph: Graph,
+                 write: Callable[..., None], lost_prefix: str) -> None:
+        self._pub = planned
+        begin = start_ns + planned.t_ns
+        self._endpoint = Endpoint(-1, planned.topic, planned.type, "", None, planned.latch, begin)
+        if graph.discovery_ns:  # a new DDS participant: it and the nodes know each other after discovery
+            self._endpoint.ready_ns = begin + graph.discovery_ns
+        self._graph = graph
+        self._write = write
+        self._lost_prefix = lost_prefix
+        self._due: int | None = begin  # the next message (or, while waiting, the next look for a subscription)
+        self._waiting = planned.wait
+        self._first: int | None = None
+        self._sent = 0
+        self._end: int | None = None  # when the command has left the graph
+        self._held: Latched | None = None
+        self._now = begin
+
+    def _gone(self, t: int) -> bool:
+        return self._end is not None and t >= self._end
+
+    def _reached(self, t: int) -> list:
+        """The node subscribers (node index, handle) the publisher reaches at t (the robot's base takes the
+        scenario's script, not the grader's publications)."""
+        if t < self._endpoint.registered_ns or self._gone(t):
+            return []
+        return [key for key in self._graph.receivers(self._endpoint, t) if key != ROBOT]
+
+    def next_ns(self) -> int | None:
+        """When the loop must stop for this command (a message due, a latched message to go out or to reach a
+        subscriber that has just come); None: nothing more."""
+        if self._gone(self._now):
+            return None
+        times = [] if self._due is None else [self._due]
+        held = self._held
+        if held is not None:
+            if not held.sent:
+                times.append(self._graph.ready_ns(self._endpoint))
+            elif any(key not in held.receivers for key in self._reached(self._now)):
+                times.append(self._now)
+        return min(times, default=None)
+
+    def tick(self, t: int) -> None:
+        self._now = t
+        if self._gone(t):
+            return
+        if self._due is not None and self._due <= t:
+            if self._waiting and not self._reached(t):
+                self._due = t + POLL_NS
+            else:
+                self._waiting = False
+                self._publish(t)
+        self._serve_latched(t)
+
+    def _publish(self, t: int) -> None:
+        planned = self._pub
+        self._first = t if self._first is None else self._first
+        self._sent += 1
+        more = planned.period_ns is not None and (planned.times == 0 or self._sent < planned.times)
+        self._due = self._first + self._sent * planned.period_ns if more else None
+        if not more and planned.stay_ns is not None:
+            self._end = t + planned.stay_ns
+        connected = t >= self._graph.ready_ns(self._endpoint)
+        if planned.latch:
+            self._held = Latched(planned.data, t, sent=connected, receivers=set())
+        if not connected:
+            if not planned.latch:
+                self._write(self._lost_prefix + planned.topic, planned.type, planned.data, t,
+                            callerid=planned.callerid, origin="grader")
+            return
+        self._write(planned.topic, planned.type, planned.data, t, callerid=self._pub.callerid, latching=planned.latch,
+                    origin="grader")
+        for key in self._reached(t):
+            self._hand(key)
+
+    def _serve_latched(self, t: int) -> None:
+        """A held latched message goes out once the publisher connects, and to each subscriber that comes later."""
+        held = self._held
+        if held is None or t < self._graph.ready_ns(self._endpoint):
+            return
+        if not held.sent:
+            held.sent = True
+            self._write(self._pub.topic, self._pub.type, held.data, t, callerid=self._pub.callerid, latching=True,
+                        origin="grader")
+        for key in self._reached(t):
+            if key not in held.receivers:
+                self._hand(key)
+
+    def _hand(self, key: tuple[int, int]) -> None:
+        index, ident = key
+        node = self._graph.nodes[index]
+        node.deliveries.append((ident, self._pub.data, (self._pub.callerid, self._pub.latch)))
+        node.link.state.subscribers[ident].count += 1
+        if self._held is not None:
+            self._held.receivers.add(key)
