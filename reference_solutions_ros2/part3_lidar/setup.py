@@ -21,6 +21,7 @@ setup(
             'obstacle_stop = part3_lidar.obstacle_stop:main',
             'lidar_distance = part3_lidar.lidar_distance:main',
             'obstacle_avoidance = part3_lidar.obstacle_avoidance:main',
+            'wall_follower = part3_lidar.wall_follower:main',
         ],
     },
 )

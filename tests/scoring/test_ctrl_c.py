@@ -89,6 +89,9 @@ def _motion(task: str, s: Scenario, x: float, y: float, yaw: float) -> list[Segm
     if task == "obstacle_avoidance":  # through the four corner zones, then turning on the spot until 90 s
         tour = _to(x, y, yaw, [(2.0, 2.0), (-2.0, 2.0), (-2.0, -2.0), (2.0, -2.0)], 0.22, 0.8)
         return [*tour, (90.0 - sum(d for d, _, _ in tour), 0.0, 0.5)]
+    if task == "wall_follower":  # 0.4 m from the left wall to the end zone, round the corner the course turns
+        turn = {"l_corridor": [(2.4, 0.2), (2.4, 2.5)], "l_corridor_mirrored": [(2.8, 0.2), (2.8, -2.5)]}
+        return _to(x, y, yaw, [(0.5, 0.2), *turn.get(s.world or "", [(3.5, 0.2)])], 0.2, 1.0)
     if task == "lidar_distance":  # the grader turns the robot (the scenario's script); the node only prints
         return [(1.0, 0.0, 0.0), (4.0, 0.0, 0.3), (7.0, 0.0, -0.3)]
     if task == "figure_of_eight":  # two 1 m loops of 30 s each, anticlockwise then clockwise
@@ -192,6 +195,7 @@ DRIVING_TASKS = (
     "move_square", "mover_odom_square", "mover_timed_square", "obstacle_avoidance", "obstacle_stop", "odom_subscriber",
     "square_odom_launch",
     "turtle_circle", "turtle_clean", "turtle_goal", "turtle_launch", "turtle_move", "turtle_rotate", "turtle_triangle",
+    "wall_follower",
 )
 CRITERIA = [(task, c.id, after) for task in DRIVING_TASKS for c in RUBRICS[task].criteria
             if not c.metric_def.needs_shutdown for after in AFTER]

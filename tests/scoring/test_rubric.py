@@ -40,6 +40,7 @@ CONTRACT = {
     "turtle_rotate_absolute": ["reaches_angle", "uses_action", "reads_result"],
     "lidar_distance": ["distances", "rate"],
     "obstacle_avoidance": ["zones", "no_collision", "stops_at_end"],
+    "wall_follower": ["distance", "reaches_end", "no_collision"],
 }
 
 MINIMAL = '''
