@@ -1,8 +1,9 @@
 """Tasks started from a ROS 2 launch file ([launch] with a .launch.py): move_distance_launch's distance argument
 reaches the node as an argument or as a parameter (a --params-file launch_ros writes) and scores full marks, a
-launch file that hard-codes the distance loses exactly stop_position; square_odom_launch's two nodes from one launch
-file in the ROS 2 reference package score full marks, a launch file that forgets the odometry printer loses exactly
-the printing criteria; recordings repeat bit for bit."""
+launch file that hard-codes the distance loses exactly stop_position, and distance:=2 handed to a parameter declared
+as a float without ParameterValue(value_type=float) stops the node as real rclpy does; square_odom_launch's two nodes
+from one launch file in the ROS 2 reference package score full marks, a launch file that forgets the odometry printer
+loses exactly the printing criteria; recordings repeat bit for bit."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -15,7 +16,7 @@ from grader.grading import grade_task
 from grader.rubric import load_rubric
 from grader.report import TaskReport
 
-pytestmark = pytest.mark.slow  # six graded tasks of two scenarios each, about 50 s
+pytestmark = pytest.mark.slow  # seven graded tasks of two scenarios each, about 45 s
 
 ROOT = Path(__file__).resolve().parents[2]
 SUBMISSIONS = Path(__file__).resolve().parent / "submissions"
@@ -56,11 +57,24 @@ def square_graded(tmp_path_factory: pytest.TempPathFactory) -> dict[str, TaskRep
             for launch in ("square_and_odom.launch.py", "square_only.launch.py")}
 
 
+def _without_value_type(folder: Path) -> Path:
+    """launch_distance_param with the distance passed as launch reads it: distance:=2 reaches the node as an integer."""
+    shutil.copytree(SUBMISSIONS / "launch_distance_param", folder / "launch_distance_param")
+    launch = folder / "launch_distance_param" / "move_distance_param" / "launch" / "move_turtlebot.launch.py"
+    typed = "ParameterValue(LaunchConfiguration('distance'), value_type=float)"
+    assert typed in launch.read_text()
+    launch.write_text(launch.read_text().replace(typed, "LaunchConfiguration('distance')"))
+    return folder / "launch_distance_param"
+
+
 @pytest.fixture(scope="module")
 def graded(rubric, tmp_path_factory: pytest.TempPathFactory) -> dict[str, TaskReport]:
     out = tmp_path_factory.mktemp("graded")
-    return {name: grade_task(SUBMISSIONS / name, rubric, out / name)
-            for name in ("launch_distance", "launch_distance_param", "launch_distance_hardcoded")}
+    found = {name: grade_task(SUBMISSIONS / name, rubric, out / name)
+             for name in ("launch_distance", "launch_distance_param", "launch_distance_hardcoded")}
+    untyped = _without_value_type(tmp_path_factory.mktemp("untyped"))
+    found["untyped"] = grade_task(untyped, rubric, out / "untyped")
+    return found
 
 
 def _lost(report: TaskReport) -> set[str]:
@@ -78,6 +92,13 @@ def test_text_of_a_node_without_output_screen_is_said_to_go_to_the_log(graded: d
     assert any("its Node has no output='screen': ros2 launch shows only its stderr" in d
                for d in graded["launch_distance"].diagnostics)
     assert not any("output=" in d for d in graded["launch_distance_param"].diagnostics)
+
+
+def test_an_integer_argument_for_a_float_parameter_stops_the_node_as_rclpy_does(graded: dict[str, TaskReport]) -> None:
+    report = graded["untyped"]
+    assert _lost(report) == {"stop_position", "stays_stopped", "velocity_limits"}
+    assert any("InvalidParameterTypeException" in d and "Trying to set parameter 'distance' to '2' of type 'INTEGER', "
+               "expecting type 'DOUBLE'" in d for d in report.diagnostics)
 
 
 def test_hard_coded_distance_loses_exactly_stop_position(graded: dict[str, TaskReport]) -> None:
