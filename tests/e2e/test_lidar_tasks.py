@@ -1,5 +1,6 @@
-"""The LiDAR tasks end to end (lidar_distance, obstacle_avoidance): each task's rospy and rclpy references earn full
-marks in every scenario, and their recordings re-score to the live result (one grading per task and reference)."""
+"""The LiDAR tasks end to end (lidar_distance, obstacle_avoidance, wall_follower): each task's rospy and rclpy
+references earn full marks in every scenario, and their recordings re-score to the live result (one grading per task
+and reference)."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -15,7 +16,8 @@ pytestmark = pytest.mark.slow
 
 ROOT = Path(__file__).resolve().parents[2]
 TASKS = {"lidar_distance": ["arena_centre", "corridor", "turtlebot3_world"],
-         "obstacle_avoidance": ["centre", "mirrored", "south"]}
+         "obstacle_avoidance": ["centre", "mirrored", "south"],
+         "wall_follower": ["corridor", "left_turn", "right_turn"]}
 CASES = [(task, library) for task in sorted(TASKS) for library in ("rclpy", "rospy")]
 
 
