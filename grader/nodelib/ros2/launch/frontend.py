@@ -42,7 +42,14 @@ class Entity:
 
 
 def _xml_entity(element: ElementTree.Element) -> Entity:
-    return Entity(element.tag, dict(element.attrib), [_xml_entity(child) for child in element])
+    """An XML element; `name-sep="," name="a,b"` makes the attribute a list, as launch_xml reads it."""
+    attrs: dict[str, Any] = {}
+    for key, value in element.attrib.items():
+        if key.endswith("-sep"):
+            continue
+        separator = element.attrib.get(f"{key}-sep")
+        attrs[key] = value.split(separator) if separator is not None else value
+    return Entity(element.tag, attrs, [_xml_entity(child) for child in element])
 
 
 def _yaml_entity(type_name: str, body: Any) -> Entity:
@@ -90,6 +97,8 @@ def subs(value: Any) -> list[Substitution]:
 
 def _typed(value: Any) -> Any:
     """An attribute read with YAML rules (launch_xml's coercion): text with substitutions stays substitutions."""
+    if isinstance(value, list):
+        return [_typed(item) for item in value]
     if isinstance(value, str):
         loaded = yaml.safe_load(value) if value else value
         if not isinstance(loaded, str):

@@ -19,16 +19,25 @@ class ParameterValue:
 
     def evaluate(self, context: LaunchContext) -> Any:
         value = self.value
-        if isinstance(value, (str, Substitution)) or (isinstance(value, (list, tuple)) and value
-                                                       and all(isinstance(v, (str, Substitution)) for v in value)):
-            text = perform_substitutions(context, normalize_to_list_of_substitutions(value))
-            if self.value_type is str:
-                return text
-            loaded = yaml.safe_load(text) if text else ""
-            if self.value_type in (int, float, bool) and not isinstance(loaded, self.value_type):
-                return self.value_type(loaded)
-            return loaded
+        if isinstance(value, (list, tuple)) and any(isinstance(v, Substitution) for v in value) \
+                and all(isinstance(v, (str, Substitution)) for v in value):
+            return self._coerced(perform_substitutions(context, normalize_to_list_of_substitutions(value)))
+        if isinstance(value, (str, Substitution)):
+            return self._coerced(perform_substitutions(context, normalize_to_list_of_substitutions(value)))
+        if isinstance(value, (list, tuple)):
+            # A list of values, each typed on its own (the items of an XML value with value-sep, for instance).
+            return [self._coerced(perform_substitutions(context, item)) if isinstance(item, list) else item
+                    for item in value]
         return value
+
+    def _coerced(self, text: str) -> Any:
+        """The text as launch types it: YAML rules, or the value_type asked for."""
+        if self.value_type is str:
+            return text
+        loaded = yaml.safe_load(text) if text else ""
+        if self.value_type in (int, float, bool) and not isinstance(loaded, self.value_type):
+            return self.value_type(loaded)
+        return loaded
 
 
 class ParameterFile:
