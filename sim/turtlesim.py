@@ -12,6 +12,11 @@ turtle's ``set_pen``, ``teleport_absolute`` and ``teleport_relative``, handled a
 answers them in its next update's ``spinOnce``, before moving the turtles, which has the same effect on the turtles.
 The background is turtle_frame.cpp's: its private ``background_r/g/b`` parameters on the run's parameter server
 (``use_parameters``), given their defaults at start when unset, and read again by every ``/clear`` and ``/reset``.
+
+A ROS 2 run has this same world on the ROS 2 wire: Jazzy's turtle.cpp moves, times out and clamps a turtle as noetic's
+does. What Jazzy's does differently is not modelled, as the world is not told its wire: ``linear.y`` only with its
+``holonomic`` parameter, parameters as the node's own, the colour sensor reading the transparent path image (white
+where no pen drew), the wording of two errors.
 """
 from __future__ import annotations
 
