@@ -1,6 +1,6 @@
-"""The LiDAR tasks end to end (lidar_distance, obstacle_avoidance, wall_follower): each task's rospy and rclpy
-references earn full marks in every scenario, and their recordings re-score to the live result (one grading per task
-and reference)."""
+"""The LiDAR tasks end to end in ROS 2: the rclpy reference package part3_lidar, graded once for lidar_distance,
+obstacle_avoidance and wall_follower, earns full marks in every scenario, and its recordings re-score to the live
+result. (The rospy references are graded with the rest of reference_solutions in test_reference_solutions.)"""
 from __future__ import annotations
 
 from pathlib import Path
@@ -14,35 +14,28 @@ from grader.scoring import score_task
 
 pytestmark = pytest.mark.slow
 
-ROOT = Path(__file__).resolve().parents[2]
+PACKAGE = Path(__file__).resolve().parents[2] / "reference_solutions_ros2" / "part3_lidar"
 TASKS = {"lidar_distance": ["arena_centre", "corridor", "turtlebot3_world"],
          "obstacle_avoidance": ["centre", "mirrored", "south"],
          "wall_follower": ["corridor", "left_turn", "right_turn"]}
-CASES = [(task, library) for task in sorted(TASKS) for library in ("rclpy", "rospy")]
 
 
-def _reference(task: str, library: str) -> Path:
-    if library == "rospy":
-        return ROOT / "reference_solutions" / f"{task}.py"
-    return ROOT / "reference_solutions_ros2" / "part3_lidar"
+@pytest.fixture(scope="module")
+def report(tmp_path_factory):
+    return grade_submission(PACKAGE, tmp_path_factory.mktemp("part3_lidar"), sorted(TASKS))
 
 
-@pytest.fixture(scope="module", params=CASES, ids=["-".join(case) for case in CASES])
-def graded(request, tmp_path_factory):
-    task, library = request.param
-    report = grade_submission(_reference(task, library), tmp_path_factory.mktemp(f"{task}-{library}"), [task])
-    return task, next(t for t in report.tasks if t.id == task)
-
-
-def test_reference_scores_full_marks(graded):
-    task, result = graded
+@pytest.mark.parametrize("task", sorted(TASKS))
+def test_reference_scores_full_marks(report, task):
+    result = next(t for t in report.tasks if t.id == task)
     assert result.status == "graded", result.message
     assert {c.id: c.feedback for c in result.criteria if c.score < c.max_score} == {}
     assert sorted(Path(p).stem for p in result.recordings) == TASKS[task]
 
 
-def test_recordings_rescore_identically(graded):
-    task, result = graded
+@pytest.mark.parametrize("task", sorted(TASKS))
+def test_recordings_rescore_identically(report, task):
+    result = next(t for t in report.tasks if t.id == task)
     recordings = {Path(p).stem: Recording.open(p) for p in result.recordings}
     again = score_task(load_rubrics()[task], recordings)
     assert [c.model_dump() for c in again.criteria] == [c.model_dump() for c in result.criteria]
