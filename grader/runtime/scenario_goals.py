@@ -46,9 +46,7 @@ class PlannedGoal:
 
 
 def planned_goals(goals: list[ActionGoalSpec], wire: Wire) -> list[PlannedGoal]:
-    """The scenario's goals encoded for the run's wire; ServiceRouteError names one that cannot be sent."""
-    if goals and wire.name != "ros2":
-        raise ServiceRouteError("scenario action_goals are ROS 2 actions; a rospy node's actionlib is not supported")
+    """The scenario's goals encoded for the run's (ROS 2) wire; ServiceRouteError names one that cannot be sent."""
     return [_planned(index, spec, wire) for index, spec in enumerate(goals)]
 
 

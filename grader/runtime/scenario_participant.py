@@ -1,12 +1,13 @@
 """The scenario as a participant: /rosgrade on the run's graph, which makes the scenario's service calls, parameter
-sets and action goals (scenario_calls.py, scenario_goals.py) and its publications (scenario_topics.py) at their sim
-times, through the run's routing, recorded with origin "grader" as any node's traffic is recorded."""
+sets and action goals (scenario_calls.py, scenario_goals.py; actionlib's in scenario_actionlib.py) and its
+publications (scenario_topics.py) at their sim times, through the run's routing, recorded with origin "grader" as any node's traffic is recorded."""
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
 
 from grader.runtime.param_server import ParamServer
+from grader.runtime.scenario_actionlib import planned_actionlib_goals
 from grader.runtime.scenario_calls import PlannedCall, ScenarioCaller, planned_calls
 from grader.runtime.scenario_goals import PlannedGoal, planned_goals
 from grader.runtime.scenario_topics import Graph, PlannedPublication, PublicationError, TopicPublisher, \
@@ -31,10 +32,12 @@ class ParticipantPlan:
 
 def plan(scenario: Scenario, wire: Wire) -> ParticipantPlan:
     """The scenario's acts encoded for ``wire``; ParticipantError names the first that cannot be made."""
+    actionlib = wire.name == "ros1"  # rospy's actions are actionlib's topics; rclpy's are services and topics
     try:
         return ParticipantPlan(planned_calls(scenario.service_calls, wire, scenario.param_sets),
-                               planned_goals(scenario.action_goals, wire),
-                               planned_publications(scenario.publications, wire))
+                               [] if actionlib else planned_goals(scenario.action_goals, wire),
+                               planned_publications(scenario.publications, wire)
+                               + (planned_actionlib_goals(scenario.action_goals, wire) if actionlib else []))
     except (ServiceRouteError, PublicationError) as exc:
         raise ParticipantError(str(exc)) from None
 

@@ -61,7 +61,7 @@ def build_message(wire: Wire, type_name: str, values: Mapping[str, object], wher
                                f"{', '.join(fields) or 'none'}")
     built = {field: _field(wire, desc, values.get(field), f"{where}.{field}" if where else field)
              for field, desc in fields.items()}
-    return wire.catalog.message_class(name)(**built)
+    return store.types[name](**built)
 
 
 def _field(wire: Wire, desc: tuple, value: object, where: str) -> object:
@@ -132,6 +132,9 @@ class PlannedPublication:
     wait: bool  # ros2 topic pub --once/-t: wait for a matching subscription before the first message
     stay_ns: int | None  # how long the command stays after its last message (None: until the run ends)
     callerid: str  # /rosgrade; a later command on a topic already published is a node of its own, as in real ROS
+    poll_ns: int = POLL_NS  # while waiting: how often the command looks for a matching subscription
+    register_ns: int | None = None  # when its publisher registers, relative to the start (None: at t_ns)
+    make: Callable[[int], bytes | None] | None = None  # the bytes when they go out (None: ``data``; it: nothing)
 
 
 def planned_publications(specs: list[PublicationSpec], wire: Wire) -> list[PlannedPublication]:
@@ -175,9 +178,10 @@ class TopicPublisher:
                  write: Callable[..., None], lost_prefix: str) -> None:
         self._pub = planned
         begin = start_ns + planned.t_ns
-        self._endpoint = Endpoint(-1, planned.topic, planned.type, "", None, planned.latch, begin)
+        registered = begin if planned.register_ns is None else start_ns + planned.register_ns
+        self._endpoint = Endpoint(-1, planned.topic, planned.type, "", None, planned.latch, registered)
         if graph.discovery_ns:  # a new DDS participant: it and the nodes know each other after discovery
-            self._endpoint.ready_ns = begin + graph.discovery_ns
+            self._endpoint.ready_ns = registered + graph.discovery_ns
         self._graph = graph
         self._write = write
         self._lost_prefix = lost_prefix
@@ -187,6 +191,7 @@ class TopicPublisher:
         self._sent = 0
         self._end: int | None = None  # when the command has left the graph
         self._held: Latched | None = None
+        self._data = planned.data
         self._now = begin
 
     def _gone(self, t: int) -> bool:
@@ -219,7 +224,7 @@ class TopicPublisher:
             return
         if self._due is not None and self._due <= t:
             if self._waiting and not self._reached(t):
-                self._due = t + POLL_NS
+                self._due = t + self._pub.poll_ns
             else:
                 self._waiting = False
                 self._publish(t)
@@ -227,6 +232,11 @@ class TopicPublisher:
 
     def _publish(self, t: int) -> None:
         planned = self._pub
+        data = planned.data if planned.make is None else planned.make(t)
+        if data is None:  # nothing to send after all (a cancel for a goal never sent)
+            self._due = None
+            return
+        self._data = data
         self._first = t if self._first is None else self._first
         self._sent += 1
         more = planned.period_ns is not None and (planned.times == 0 or self._sent < planned.times)
@@ -235,13 +245,13 @@ class TopicPublisher:
             self._end = t + planned.stay_ns
         connected = t >= self._graph.ready_ns(self._endpoint)
         if planned.latch:
-            self._held = Latched(planned.data, t, sent=connected, receivers=set())
+            self._held = Latched(data, t, sent=connected, receivers=set())
         if not connected:
             if not planned.latch:
-                self._write(self._lost_prefix + planned.topic, planned.type, planned.data, t,
+                self._write(self._lost_prefix + planned.topic, planned.type, data, t,
                             callerid=planned.callerid, origin="grader")
             return
-        self._write(planned.topic, planned.type, planned.data, t, callerid=self._pub.callerid, latching=planned.latch,
+        self._write(planned.topic, planned.type, data, t, callerid=self._pub.callerid, latching=planned.latch,
                     origin="grader")
         for key in self._reached(t):
             self._hand(key)
@@ -262,7 +272,7 @@ class TopicPublisher:
     def _hand(self, key: tuple[int, int]) -> None:
         index, ident = key
         node = self._graph.nodes[index]
-        node.deliveries.append((ident, self._pub.data, (self._pub.callerid, self._pub.latch)))
+        node.deliveries.append((ident, self._data, (self._pub.callerid, self._pub.latch)))
         node.link.state.subscribers[ident].count += 1
         if self._held is not None:
             self._held.receivers.add(key)

@@ -62,8 +62,9 @@ def test_the_run_repeats_bit_for_bit(tmp) -> None:
     assert (tmp / "one.mcap").read_bytes() == (tmp / "two.mcap").read_bytes()
 
 
-def test_goals_are_refused_for_rospy_nodes_and_when_cancelled_before_they_are_sent(tmp) -> None:
-    with pytest.raises(RunError, match="action_goals are ROS 2 actions"):
+def test_goals_of_an_action_unknown_to_rospy_and_cancelled_before_they_are_sent_are_refused(tmp) -> None:
+    # a rospy run sends goals with actionlib (tests/runtime/test_scenario_actionlib_goals.py), in its catkin types
+    with pytest.raises(RunError, match="is not an action the run knows"):
         run(RunSpec(scenario=Scenario(duration=1.0, action_goals=GOALS[:1]),
                     nodes=(NodeSpec(script=NODES / "fib_server.py", flavour="ros1"),)), tmp / "r.mcap", tmp / "r.log")
     with pytest.raises(ValidationError, match="cancelled at 0.2 s"):
