@@ -3,7 +3,8 @@ reaches the node as an argument or as a parameter (a --params-file launch_ros wr
 launch file that hard-codes the distance loses exactly stop_position, and distance:=2 handed to a parameter declared
 as a float without ParameterValue(value_type=float) stops the node as real rclpy does; square_odom_launch's two nodes
 from one launch file in the ROS 2 reference package score full marks, a launch file that forgets the odometry printer
-loses exactly the printing criteria; recordings repeat bit for bit."""
+loses exactly the printing criteria; figure_of_eight from a COM2009 team package's task1.launch.py scores full marks;
+recordings repeat bit for bit."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -16,7 +17,7 @@ from grader.grading import grade_task
 from grader.rubric import load_rubric
 from grader.report import TaskReport
 
-pytestmark = pytest.mark.slow  # seven graded tasks of two scenarios each, about 45 s
+pytestmark = pytest.mark.slow  # eight graded tasks of two or three scenarios each, about 70 s
 
 ROOT = Path(__file__).resolve().parents[2]
 SUBMISSIONS = Path(__file__).resolve().parent / "submissions"
@@ -121,3 +122,16 @@ def test_two_nodes_from_one_ros2_launch_file_score_full_marks(square_graded: dic
 
 def test_a_forgotten_odometry_printer_loses_exactly_the_printing_criteria(square_graded: dict[str, TaskReport]) -> None:
     assert _lost(square_graded["square_only.launch.py"]) == {"pose_output", "output_rate"}
+
+
+def test_a_com2009_task_launch_file_scores_full_marks(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """figure_of_eight started as COM2009 marks it, `ros2 launch com2009_team99 task1.launch.py`."""
+    folder = tmp_path_factory.mktemp("figure_rubric")
+    text = (ROOT / "rubrics" / "figure_of_eight.toml").read_text()
+    nodes = '[[nodes]]\nscript = "figure_eight.py"\n'
+    assert nodes in text
+    (folder / "figure_of_eight.toml").write_text(text.replace(nodes, '[launch]\nfile = "task1.launch.py"\n'))
+    report = grade_task(SUBMISSIONS / "com2009_team99", load_rubric(folder / "figure_of_eight.toml"),
+                        tmp_path_factory.mktemp("figure"))
+    assert _lost(report) == set()
+    assert report.score == report.max_score
