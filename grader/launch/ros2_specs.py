@@ -11,12 +11,11 @@ from grader.launch.ros2_cli import external_include_notes
 from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_eval import Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed
+from grader.launch.specs import MAX_NODES
 from grader.runtime.client_library import client_library, entry_point, import_roots
 from grader.runtime.spec import NodeSpec, file_arg
 from grader.workspace import WorkspaceError
 from grader.workspace.model import Workspace
-
-MAX_NODES = 16  # each node is a process of the run; a course launch file starts two or three
 
 
 def _argv(process: dict[str, Any]) -> tuple[tuple[str, ...], tuple[tuple[str, bytes], ...]]:
