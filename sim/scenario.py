@@ -207,7 +207,7 @@ class Scenario(_Model):
     shutdown_at: NonNegative | None = Field(
         None, description="seconds after start_time when the operator presses Ctrl+C (used by the grader, not the world)"
     )
-    seed: int = Field(0, description="recorded with the run; the world itself is deterministic and draws no random numbers")
+    seed: int = Field(0, description="recorded with the run; keys the LiDAR's noise (a function of the seed and the sweep's time)")
     imperfections: Imperfections = Imperfections()
     script: list[ScriptedCommand] = Field(default_factory=list, description="commands sent by the scripted driver")
     obstacles: list[Obstacle] = Field(default_factory=list, description="fixed walls and pillars (empty: an open floor)")
