@@ -180,8 +180,9 @@ class Turtle:
 class TurtlesimWorld(ScenarioTimes):
     """One run of turtlesim: ``command`` a turtle, ``advance_to`` a time, collect what it published on the way."""
 
-    def __init__(self, scenario: Scenario) -> None:
+    def __init__(self, scenario: Scenario, flavour: str = "ros1") -> None:
         self.scenario = scenario
+        self.flavour = flavour  # "ros1" (Noetic's turtlesim) or "ros2" (Jazzy's)
         self.mode_name = "kinematic"
         self.canvas = Canvas(DEFAULT_BACKGROUND)
         self.params: Parameters | None = None  # the run's parameter server, once given

@@ -9,9 +9,11 @@ from sim.world import World
 WORLD_NODE_NAMES = frozenset({world.NODE_NAME, turtlesim.NODE_NAME})  # the nodes a world stands for
 
 
-def open_world(scenario: Scenario) -> World | TurtlesimWorld:
-    """The world that runs ``scenario`` (both keep the contract in DEVELOPERS.md, so callers need not know which)."""
-    return TurtlesimWorld(scenario) if scenario.robot == TURTLESIM else World(scenario)
+def open_world(scenario: Scenario, flavour: str = "ros1") -> World | TurtlesimWorld:
+    """The world that runs ``scenario`` (both keep the contract in DEVELOPERS.md, so callers need not know which), as
+    the ROS version of the run's nodes has it (``flavour``: "ros1" or "ros2"; turtlesim differs between Noetic's and
+    Jazzy's)."""
+    return TurtlesimWorld(scenario, flavour) if scenario.robot == TURTLESIM else World(scenario)
 
 
 def start_pose(scenario: Scenario) -> Pose2D:

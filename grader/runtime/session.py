@@ -174,7 +174,7 @@ class Session:
                 for index, node_spec in enumerate(self.spec.nodes):
                     self._spawn(node_spec, workroot / f"node{index}")
             with timing.stage("world set-up (model, run to the start)"):
-                self.world = open_world(self.spec.scenario)
+                self.world = open_world(self.spec.scenario, self.wire.name)
             self._take_declarations()
         except BaseException:
             for node in self.nodes:
