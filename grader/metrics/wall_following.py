@@ -1,6 +1,6 @@
 """Wall following, scored as MIT RSS's wall follower tests score a run: the distance from the robot to the wall on
 its followed side along the run, the loss (mean absolute error from the desired distance) and the score
-1 / (alpha * loss + 1), and whether the robot reached the course world's end zone.
+1 / (alpha * loss + 1), which MIT gives only to a run that reached the end zone (0 otherwise).
 
 The distance is measured from the ground truth and the world's geometry, not from a scan: from the robot's centre
 to the nearest point of any wall or pillar on the followed side (lateral offset of that sign, within ``reach`` m).
@@ -82,7 +82,7 @@ def measure(run: RunData, params: Params) -> Measurement:
     finite = [d for d in distances if math.isfinite(d)]
     return {
         "loss": loss,
-        "score": 1.0 / (params.alpha * loss + 1.0) if errors else 0.0,
+        "mit_score": 1.0 / (params.alpha * loss + 1.0) if errors and not math.isnan(reached_at) else 0.0,
         "mean_distance": sum(finite) / len(finite) if finite else math.nan,
         "min_distance": min(finite, default=math.nan),
         "max_distance": max(finite, default=math.nan),
@@ -97,7 +97,7 @@ def measure(run: RunData, params: Params) -> Measurement:
 METRIC = Metric(
     name="wall_following",
     params=Params,
-    quantities=frozenset({"loss", "score", "mean_distance", "min_distance", "max_distance", "no_wall_fraction",
+    quantities=frozenset({"loss", "mit_score", "mean_distance", "min_distance", "max_distance", "no_wall_fraction",
                           "side", "desired_distance", "reached_end", "reached_end_at_s"}),
     measure=measure,
 )

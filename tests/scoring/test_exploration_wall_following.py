@@ -56,19 +56,20 @@ def test_following_the_corridors_left_wall_at_its_distance_reaches_the_end() -> 
     m = follow(_in(CORRIDOR, [(20.0, 0.2, 0.0)], y0=-0.35), WallParams(side="left", desired_distance=0.95))
     assert m["reached_end"] and m["reached_end_at_s"] == pytest.approx(3.0 / 0.2, abs=0.05)
     assert m["mean_distance"] == pytest.approx(0.95, abs=1e-9) and m["loss"] == pytest.approx(0.0, abs=1e-9)
-    assert m["score"] == pytest.approx(1.0)
+    assert m["mit_score"] == pytest.approx(1.0)
 
 
 def test_the_loss_is_the_mean_absolute_error_and_the_score_mits() -> None:
     m = follow(_in(CORRIDOR, [(20.0, 0.2, 0.0)], y0=-0.35), WallParams(side="right", desired_distance=0.5,
                                                                           alpha=2.0))
     assert m["mean_distance"] == pytest.approx(0.25, abs=1e-9)
-    assert m["loss"] == pytest.approx(0.25, abs=1e-9) and m["score"] == pytest.approx(1 / (2.0 * 0.25 + 1))
+    assert m["loss"] == pytest.approx(0.25, abs=1e-9) and m["mit_score"] == pytest.approx(1 / (2.0 * 0.25 + 1))
 
 
 def test_a_run_that_stops_short_does_not_reach_the_end() -> None:
     m = follow(_in(CORRIDOR, [(5.0, 0.2, 0.0), (10.0, 0.0, 0.0)]), WallParams(desired_distance=0.6))
     assert not m["reached_end"] and math.isnan(m["reached_end_at_s"])
+    assert m["loss"] == pytest.approx(0.0, abs=1e-9) and m["mit_score"] == 0.0  # MIT scores only runs that finish
 
 
 def test_wall_distance_sees_only_the_followed_side() -> None:
