@@ -18,6 +18,7 @@ from grader.launch.ros2_specs import ros2_node_specs
 from grader.launch.specs import node_specs
 from grader.recording import Recording, RecordingError
 from grader.recording.ros2_messages import ACTIONS as BUILTIN_ACTIONS
+from grader.recording.ros2_messages import SERVICES as BUILTIN_SERVICES
 from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
 from grader.rubric import GRADER_NODES, Node, Rubric, Scenario, load_rubrics
 from grader.rubricfile import RubricFile, load_rubric_files, stamp
@@ -51,32 +52,42 @@ class _NoOwnType(Exception):
     """The task names a type of the submission's own that no package of it generates."""
 
 
-def _own_type(name: str, interfaces: InterfaceSet | None) -> str:
+def _own_type(name: str, interfaces: InterfaceSet | None, flavour: str = ROS2) -> str:
     """``name``, or for "*/srv/<Name>" ("*/action/<Name>") the submission's own srv (action) of that name (the first
-    package's, by name); an action the submission does not define is the built-in one of that name, as the action
-    tutorials use either (example_interfaces' Fibonacci, or their own with the same goal and result)."""
+    package's, by name), as the run's client library spells it (rospy: ``pkg/Name`` for a srv); without one, rclpy's
+    built-in type of that name, as the tutorials use either (example_interfaces' AddTwoInts and Fibonacci, or their
+    own with the same fields). rospy's tutorials always build their own (catkin's add_service_files/add_action_files)."""
     if not name.startswith(OWN_TYPE):
         return name
     wanted = name[len(OWN_TYPE):]
-    owned = [*(interfaces.services if interfaces else {}), *(interfaces.actions if interfaces else {})]
-    owners = sorted(t for t in owned if t.split("/", 1)[-1] == wanted)
-    if not owners and wanted.startswith("action/"):
-        owners = sorted(t for t in BUILTIN_ACTIONS if t.split("/", 1)[-1] == wanted)
+    kind, _, base = wanted.partition("/")
+    owned = (interfaces.services if kind == "srv" else interfaces.actions) if interfaces else {}
+    # a catkin package's actions are keyed pkg/msg/Name (genmsg makes messages of them)
+    owners = sorted(f"{t.split('/', 1)[0]}/{kind}/{base}" for t in owned if t.rsplit("/", 1)[-1] == base)
+    if not owners and flavour == ROS2:
+        owners = sorted(t for t in (BUILTIN_ACTIONS if kind == "action" else BUILTIN_SERVICES)
+                        if t.split("/", 1)[-1] == wanted)
     if not owners:
-        kind, _, base = wanted.partition("/")
+        build = (f"list {base}.{kind} in add_{'service' if kind == 'srv' else 'action'}_files() and call "
+                 "generate_messages() in its CMakeLists.txt" if flavour == ROS1 else
+                 f"list \"{wanted}.{kind}\" in rosidl_generate_interfaces() in its CMakeLists.txt")
         raise _NoOwnType(f"no package in your submission generates the {kind} type {base} this task calls: write "
-                         f"{wanted}.{kind} in your package and list \"{wanted}.{kind}\" in rosidl_generate_interfaces() "
-                         "in its CMakeLists.txt")
-    return owners[0]
+                         f"{wanted}.{kind} in your package and {build}")
+    package, _, _ = owners[0].partition("/")
+    return f"{package}/{base}" if flavour == ROS1 and kind == "srv" else owners[0]
 
 
 def _with_own_types(scenario: Scenario, nodes: tuple[NodeSpec, ...], interfaces: InterfaceSet | None,
                     ) -> tuple[Scenario, tuple[NodeSpec, ...]]:
     """The scenario's calls and goals and the nodes' arguments with every "*/srv/<Name>" ("*/action/<Name>") made the
-    submission's own type."""
-    calls = [call.model_copy(update={"type": _own_type(call.type, interfaces)}) for call in scenario.service_calls]
-    goals = [goal.model_copy(update={"type": _own_type(goal.type, interfaces)}) for goal in scenario.action_goals]
-    nodes = tuple(replace(spec, args=tuple(_own_type(arg, interfaces) for arg in spec.args)) for spec in nodes)
+    submission's own type, spelled for the nodes' client library."""
+    flavour = nodes[0].flavour if nodes else ROS2
+    calls = [call.model_copy(update={"type": _own_type(call.type, interfaces, flavour)})
+             for call in scenario.service_calls]
+    goals = [goal.model_copy(update={"type": _own_type(goal.type, interfaces, flavour)})
+             for goal in scenario.action_goals]
+    nodes = tuple(replace(spec, args=tuple(_own_type(arg, interfaces, spec.flavour) for arg in spec.args))
+                  for spec in nodes)
     return scenario.model_copy(update={"service_calls": calls, "action_goals": goals}), nodes
 
 
