@@ -13,6 +13,7 @@ from pathlib import Path
 from grader import timing
 from grader.interfaces import InterfaceSet, run_interfaces
 from grader.launch import LaunchError, find_packages, read_launch, turtlesim
+from grader.launch.ros2_acts import LaunchActs, with_acts
 from grader.launch.ros2_cli import build_type_of, is_ros2_file
 from grader.launch.ros2_specs import ros2_node_specs
 from grader.launch.specs import node_specs
@@ -162,13 +163,14 @@ def _script_nodes(folder: Path, rubric: Rubric) -> Started:
                              "each other: write them all with one client library")
     # The grader's own nodes (a server the student's client calls) are neither checked nor the student's files.
     provided = tuple(NodeSpec(script=GRADER_NODES / node.script, args=tuple(node.args),
-                              flavour=client_library(GRADER_NODES / node.script, workspace))
+                              flavour=client_library(GRADER_NODES / node.script, workspace), provided=True)
                      for node in rubric.grader_nodes)
     return nodes + provided, findings, [script for script, _ in located]
 
 
-def _launch_nodes(folder: Path, rubric: Rubric) -> Started:
-    """The nodes the student's launch file starts, as `roslaunch pkg file args...` would (LaunchError if not)."""
+def _launch_nodes(folder: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:
+    """The nodes the student's launch file starts, as `roslaunch pkg file args...` (or `ros2 launch`) would, and what
+    the grader carries out for a ROS 2 launch file's ros2 command lines (LaunchError if it cannot be read)."""
     task = rubric.launch
     names = [task.file, *task.aliases]
     found = next((candidates(folder, name) for name in names if candidates(folder, name)), None)
@@ -193,19 +195,20 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> Started:
     scripts = list(dict.fromkeys(spec.script for spec in nodes if spec.script != turtlesim.TELEOP_SCRIPT))
     for script in scripts:
         findings += check_script(script)
-    return nodes, findings, [found[0], *scripts]
+    return (nodes, findings, [found[0], *scripts]), LaunchActs()
 
 
-def _ros2_launch_nodes(folder: Path, file: Path, rubric: Rubric) -> Started:
-    """The nodes a ROS 2 launch file starts, as `ros2 launch pkg file args...` would (LaunchError if not)."""
+def _ros2_launch_nodes(folder: Path, file: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:
+    """The nodes a ROS 2 launch file starts, as `ros2 launch pkg file args...` would, and its ros2 command lines as
+    the grader's acts (LaunchError if it cannot be read)."""
     workspace = read_workspace(folder)
-    nodes, findings = ros2_node_specs(file, workspace, rubric.launch.args, rubric.launch.stdin)
+    nodes, findings, acts = ros2_node_specs(file, workspace, rubric.launch.args, rubric.launch.stdin)
     scripts = list(dict.fromkeys(spec.script for spec in nodes))
     for spec in {spec.script: spec for spec in nodes}.values():
         findings += check_script(spec.script, rosrun=spec.flavour == ROS1)
         if spec.flavour == ROS2:
             findings += package_findings(spec.script, spec.entry, workspace)
-    return nodes, findings, [file, *scripts]
+    return (nodes, findings, [file, *scripts]), acts
 
 
 def _hidden_text(nodes: tuple[NodeSpec, ...], log: Path) -> list[str]:
@@ -236,7 +239,8 @@ class _TaskPlan:
 def _plan_task(folder: Path, rubric: Rubric, out_dir: Path) -> _TaskPlan | TaskReport:
     """The task's runs, or its report at once when there is nothing to run (no script, a bad launch file)."""
     try:
-        nodes, findings, scripts = _launch_nodes(folder, rubric) if rubric.launch else _script_nodes(folder, rubric)
+        (nodes, findings, scripts), acts = _launch_nodes(folder, rubric) if rubric.launch \
+            else (_script_nodes(folder, rubric), LaunchActs())
     except ScriptNotFound as exc:
         hint = "" if rubric.launch else "; name your script as the task asks."
         return TaskReport(id=rubric.id, title=rubric.title, status="not_found", max_score=rubric.max_score,
@@ -256,7 +260,7 @@ def _plan_task(folder: Path, rubric: Rubric, out_dir: Path) -> _TaskPlan | TaskR
     interfaces = run_interfaces(read_workspace(folder), nodes[0].flavour) if nodes and folder.is_dir() else None
     findings = findings + (interfaces.findings if interfaces else [])
     try:
-        typed = [_with_own_types(scenario, nodes, interfaces) for scenario in rubric.scenarios]
+        typed = [_with_own_types(with_acts(scenario, acts), nodes, interfaces) for scenario in rubric.scenarios]
     except _NoOwnType as exc:
         return TaskReport(id=rubric.id, title=rubric.title, status="error", max_score=rubric.max_score,
                           diagnostics=findings, message=str(exc))

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from grader.launch.model import LaunchError
+from grader.launch.ros2_acts import LaunchActs, launch_acts
 from grader.launch.ros2_cli import external_include_notes
 from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_eval import Ros2LaunchError, evaluate
@@ -43,8 +44,9 @@ def _timing(process: dict[str, Any]) -> str | None:
 
 
 def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
-                    stdin: str | None) -> tuple[tuple[NodeSpec, ...], list[str]]:
-    """The nodes `ros2 launch` would start from `file`, as node specs, with findings; LaunchError if it fails."""
+                    stdin: str | None) -> tuple[tuple[NodeSpec, ...], list[str], LaunchActs]:
+    """The nodes `ros2 launch` would start from `file`, as node specs, with findings and what the grader carries out
+    for its ros2 command lines; LaunchError if it fails."""
     package = workspace.enclosing(file)
     if package is not None and package.build_type != "catkin" and not installed(package, file):
         raise LaunchError(f"{file.name} is in package {package.name} but its build does not install it, so "
@@ -64,11 +66,16 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
     findings += [f"{file.name} declares no argument {name}, so `ros2 launch` ignored the task's {name}:={value}: "
                 f"declare it with DeclareLaunchArgument('{name}') and use LaunchConfiguration('{name}') where the "
                 "value is needed." for name, value in args.items() if name not in declared]
+    acts, act_findings, handled = launch_acts(result["processes"], file.name)
+    findings += act_findings
     specs: list[NodeSpec] = []
-    for process in result["processes"]:
+    for index, process in enumerate(result["processes"]):
+        if index in handled:
+            continue
         if process["kind"] != "node":
-            findings.append(f"{file.name} starts `{' '.join(process['cmd'])}`: rosgrade runs only the nodes of a "
-                            "launch file, not other programs (ExecuteProcess); it was not run.")
+            findings.append(f"{file.name} starts `{' '.join(process['cmd'])}`: rosgrade runs the nodes of a launch "
+                            "file and carries out its `ros2 service call`, `ros2 param set`, `ros2 topic pub` and "
+                            "`ros2 action send_goal` commands, but no other program; it was not run.")
             continue
         label = f"{process['package']} {process['executable']}"
         if process.get("world") and process["executable"] == "turtlesim_node":
@@ -96,4 +103,4 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
     if not specs:
         raise LaunchError(f"{file.name} starts none of your nodes (`ros2 launch` would start: "
                           f"{', '.join(p['name'] for p in result['processes']) or 'nothing'})")
-    return tuple(specs), findings
+    return tuple(specs), findings, acts

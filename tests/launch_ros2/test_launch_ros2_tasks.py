@@ -3,7 +3,8 @@ reaches the node as an argument or as a parameter (a --params-file launch_ros wr
 launch file that hard-codes the distance loses exactly stop_position, and distance:=2 handed to a parameter declared
 as a float without ParameterValue(value_type=float) stops the node as real rclpy does; square_odom_launch's two nodes
 from one launch file in the ROS 2 reference package score full marks, a launch file that forgets the odometry printer
-loses exactly the printing criteria; figure_of_eight from a COM2009 team package's task1.launch.py scores full marks;
+loses exactly the printing criteria; figure_of_eight from a COM2009 team package's task1.launch.py scores full
+marks; a launch file's `ros2 service call` commands are carried out by the grader when launch would run them;
 recordings repeat bit for bit."""
 from __future__ import annotations
 
@@ -14,10 +15,11 @@ import shutil
 import pytest
 
 from grader.grading import grade_task
+from grader.recording import Recording
 from grader.rubric import load_rubric
 from grader.report import TaskReport
 
-pytestmark = pytest.mark.slow  # eight graded tasks of two or three scenarios each, about 70 s
+pytestmark = pytest.mark.slow  # nine graded tasks of one to three scenarios each, about 75 s
 
 ROOT = Path(__file__).resolve().parents[2]
 SUBMISSIONS = Path(__file__).resolve().parent / "submissions"
@@ -135,3 +137,25 @@ def test_a_com2009_task_launch_file_scores_full_marks(tmp_path_factory: pytest.T
                         tmp_path_factory.mktemp("figure"))
     assert _lost(report) == set()
     assert report.score == report.max_score
+
+
+def test_the_launch_files_ros2_commands_are_carried_out_when_launch_runs_them(
+        tmp_path_factory: pytest.TempPathFactory) -> None:
+    """The launch tutorials' pattern against turtlesim: `ros2 service call /spawn` when turtlesim starts, and a
+    teleport of the new turtle from a 1 s TimerAction, carried out by the grader at those times."""
+    folder = tmp_path_factory.mktemp("turtle_rubric")
+    text = (ROOT / "rubrics" / "turtle_circle.toml").read_text()
+    nodes = '[[nodes]]\nscript = "turtle_circle.py"\naliases = ["move_circle.py"]\n'
+    assert nodes in text
+    (folder / "turtle_circle.toml").write_text(text.replace(nodes, '[launch]\nfile = "turtle_circle.launch.py"\n'))
+    rubric = load_rubric(folder / "turtle_circle.toml")
+    report = grade_task(SUBMISSIONS / "turtle_tutorial", rubric, tmp_path_factory.mktemp("turtle"))
+    assert _lost(report) == set()
+    recording = Recording.open(report.recordings[0])
+    start_ns = round(rubric.scenarios[0].start_time * 1e9)
+    [(spawned_ns, _)] = list(recording.messages("/rosgrade/service/spawn/request"))
+    [(teleported_ns, _)] = list(recording.messages("/rosgrade/service/turtle2/teleport_absolute/request"))
+    assert (spawned_ns, teleported_ns) == (start_ns, start_ns + 1_000_000_000)  # at start, and after the 1 s timer
+    poses = [pose for _, pose in recording.messages("/turtle2/pose")]
+    assert (poses[0].x, poses[0].y) == (2.0, 2.0)  # spawned where the launch file's call asked
+    assert (poses[-1].x, poses[-1].y) == (5.0, 5.0)  # then teleported
