@@ -148,7 +148,8 @@ class ActionGoalSpec(_Model):
     <goal>`` would: it waits for the action's server, sends the goal and, once accepted, waits for its result; with
     ``cancel_at``, Ctrl+C then cancels the goal if it has not ended (``ros2 action send_goal``'s own cancel). ``type``
     is ``pkg/action/Name`` (a rubric's ``*/action/Name``: the submission's own action of that name, else the built-in
-    one); ``goal`` gives the fields of its Goal. Goals run side by side, each as its own command."""
+    one); ``goal`` gives the fields of its Goal. Goals run side by side, each as its own command. For rospy nodes the
+    goal goes out on ``<action>/goal`` as actionlib's client sends it, and its cancel on ``<action>/cancel``."""
 
     t: NonNegative
     action: Annotated[str, Field(pattern=r"^/[A-Za-z0-9_/]+$")]
@@ -216,7 +217,7 @@ class Scenario(_Model):
     param_sets: list[ParamSetSpec] = Field(default_factory=list,
                                            description="ROS 2 parameters the grader sets, in time order")
     action_goals: list[ActionGoalSpec] = Field(default_factory=list,
-                                               description="ROS 2 action goals the grader sends, in time order")
+                                               description="action goals the grader sends (ROS 2, or actionlib's for rospy), in time order")
     publications: list[PublicationSpec] = Field(
         default_factory=list, description="messages the grader publishes (rostopic pub / ros2 topic pub), in time order")
     command_types: list[str] | None = Field(
