@@ -25,7 +25,7 @@ CONTRACT = {
     "turtle_rotate": ["angle", "direction", "stops"],
     "turtle_circle": ["circle", "keeps_moving", "no_wall_hit"],
     "turtle_triangle": ["sides_equal", "turn_angle", "closure", "stops"],
-    "turtle_goal": ["reaches_goal", "stops", "no_wall_hit"],
+    "turtle_goal": ["reaches_goal", "stops", "no_wall_hit", "short_way"],
     "turtle_clean": ["coverage", "no_wall_hit", "finishes"],
     "turtle_launch": ["drives", "direction", "turns"],
     "add_two_ints": ["serves", "sums"],
