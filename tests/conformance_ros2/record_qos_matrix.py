@@ -47,15 +47,16 @@ def _run(role: str, seconds: float, lead: float) -> tuple[dict[str, int], str, s
     return json.loads(sub_out.strip().splitlines()[-1]), sub_err, pub_err
 
 
-def record(out: Path, seconds: float = 6.0, lead: float = 3.0) -> None:
+def record_matrix(seconds: float = 6.0, lead: float = 3.0) -> dict[str, object]:
+    """The record: per subscriber role, which pairs received anything and the warnings each side logged."""
     result: dict[str, object] = {
         "source": "rclpy 7.1.6 (ros-jazzy wheels), rmw_fastrtps_cpp; tests/conformance_ros2/qos_matrix_node.py"}
     for role in ("sub", "sub_discovered"):
         counts, sub_err, pub_err = _run(role, seconds, lead)
         result[role] = {"received": {name: count > 0 for name, count in sorted(counts.items())},
                         "subscription_warnings": _warnings(sub_err), "publisher_warnings": _warnings(pub_err)}
-    out.write_text(json.dumps(result, indent=1) + "\n")
+    return result
 
 
 if __name__ == "__main__":
-    record(Path(sys.argv[1]))
+    Path(sys.argv[1]).write_text(json.dumps(record_matrix(), indent=1) + "\n")
