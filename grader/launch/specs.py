@@ -93,7 +93,8 @@ def node_specs(launch: Launch, packages: Mapping[str, Path], stdin: str | None =
     for node in launch.nodes:
         if world is not None and node is world.node:
             continue  # the task's world, not a process
-        if node.pkg in known.NODE_PACKAGES and node.pkg not in packages:
+        provided = node.pkg in known.NODE_PACKAGES and node.pkg not in packages
+        if provided:
             script, found = _provided(node), []
         else:
             script, found = _script(node, _package(node, packages), allow_not_executable)
@@ -106,7 +107,7 @@ def node_specs(launch: Launch, packages: Mapping[str, Path], stdin: str | None =
         specs.append(NodeSpec(script=Path(os.path.abspath(script)), args=args, stdin=stdin,
                               ros_namespace=node.namespace.rstrip("/") or None,  # as roslaunch sets ROS_NAMESPACE
                               params={**launch.params, **turtlesim.world_params(launch, world)},
-                              required=node.required, output=node.output))
+                              required=node.required, output=node.output, provided=provided))
     if not specs:
         raise LaunchError(f"{launch.file.name} starts only turtlesim_node ({world.node.where}): add a <node> for "
                           "your script")

@@ -36,12 +36,19 @@ def diagnose(session: Session) -> list[str]:
     world = session.world
     command_topics = tuple(world.command_topics)
     world_topics = {p.topic: p.type for p in session.publications.values() if p.to_nodes}
-    init_call = "rclpy.init() and create a Node" if session.wire.name == "ros2" else "rospy.init_node()"
+    init_call = "rclpy.init() and create a Node" if session.wire.client_library == "rclpy" else "rospy.init_node()"
     robot_received = sum(session.received.values())
     notes: list[str] = []
     for node in session.nodes:
         state = node.link.state
         label = node.outcome.script
+        if node.spec.provided:  # the grader's own node: only its failure is worth a line (a request it choked on)
+            if state.exception:
+                notes.append(f"the grader's {label} stopped with an uncaught {state.exception.get('type')}: "
+                             f"{state.exception.get('message')}")
+            elif node.outcome.status not in ("exited", "stopped_at_end"):
+                notes.append(f"the grader's {label}: {node.outcome.message}.")
+            continue
         if state.name is None:
             notes.append(f"{label} never called {init_call}: a ROS node must do so before it can publish, "
                          "subscribe or read the time.")
@@ -50,10 +57,9 @@ def diagnose(session: Session) -> list[str]:
         if state.exception:
             exc = state.exception
             notes.append(f"{label} stopped with an uncaught {exc.get('type')}{_location(exc)}: {exc.get('message')}")
-        library = "rclpy" if session.wire.name == "ros2" else "rospy"
         for exc in state.caught:
             notes.append(f"{label} raised {exc.get('type')} in a {exc['where']}{_location(exc)}: {exc.get('message')} "
-                         f"({library} printed the traceback and carried on)")
+                         f"({session.wire.client_library} printed the traceback and carried on)")
         if state.output_truncated:
             notes.append(f"{label} printed more than the output limit; the rest was discarded.")
         if node.outcome.status != "exited" or state.name is None:
@@ -104,7 +110,7 @@ def topic_summary(session: Session) -> list[str]:
     """What each node published and received, with counts (the same kind of line for every run)."""
     lines = []
     for node in session.nodes:
-        label = node.outcome.script
+        label = f"the grader's {node.outcome.script}" if node.spec.provided else node.outcome.script
         state = node.link.state
         lines += _capped([f"{label} published {_count(p.count, 'message')} on {p.topic} ({p.type})."
                           for p in state.publishers.values() if p.topic not in LIBRARY_TOPICS]

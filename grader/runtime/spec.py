@@ -65,6 +65,9 @@ class NodeSpec:
     output: Literal["screen", "log"] = "screen"
     # Which client library the script imports (rospy: "ros1", rclpy: "ros2"): its import root and wire format.
     flavour: Literal["ros1", "ros2"] = "ros1"
+    # A node the grader provides (a server the student's client calls, teleop): confined like the student's, but
+    # its traffic and findings are not the student's to act on.
+    provided: bool = False
     # An ament_python node is started through this console_scripts entry point, as `ros2 run` would.
     entry: EntryPoint | None = None
     # Folders holding the Python packages its workspace's build installs (ament_python_install_package, setup.py's
