@@ -2,7 +2,7 @@
 them, on topics, through the grader's publisher (scenario_topics.py).
 
 actionlib 1.14's client (read from Debian's python3-actionlib) publishes ``<ns>/goal`` (the ActionGoal: header stamp
-and goal id stamp the client's now, goal id ``<node name>-<count>-<secs>.<nsecs>`` from a per-process counter) and
+and goal id stamp the client's now, goal id ``<node name>-<count>-<seconds to the ms>`` from a per-process counter) and
 ``<ns>/cancel`` (a GoalID with the goal's id and a zero stamp), both made when the client starts; its
 ``wait_for_server`` looks every 10 ms until the server's goal subscriber is connected (it also waits for the
 server's first status message, which is not modelled). All goals come from one client, /rosgrade.
@@ -20,9 +20,9 @@ _NS = 1_000_000_000
 
 
 def goal_id_text(count: int, clock_ns: int) -> str:
-    """actionlib's GoalIDGenerator id: the node name, the process's goal count, the time as secs.nsecs (nsecs not
-    padded, as ``str(cur_time.nsecs)`` prints it)."""
-    return f"{CALLER_ID}-{count}-{clock_ns // _NS}.{clock_ns % _NS}"
+    """actionlib's ActionClient goal id (GoalManager._generate_id): the node name, the process's goal count from 1,
+    and the time in seconds to the millisecond, as ``"%s-%i-%.3f"`` prints ``Time.to_sec()``."""
+    return "%s-%i-%.3f" % (CALLER_ID, count, float(clock_ns // _NS) + float(clock_ns % _NS) / 1e9)
 
 
 def _clock(t: int) -> int:

@@ -1,5 +1,5 @@
 """The grader as an actionlib client: a rospy run's scenario action_goals go out on <ns>/goal as actionlib's client
-sends them (id and stamps from real actionlib's GoalIDGenerator), once the server's goal subscriber is connected,
+sends them (id and stamps as real actionlib's ActionClient makes them), once the server's goal subscriber is connected,
 and cancel_at sends the goal's GoalID on <ns>/cancel; the tutorial's SimpleActionServer answers on its topics."""
 from __future__ import annotations
 
@@ -18,14 +18,15 @@ from sim import Scenario
 
 PACKAGE = Path(__file__).resolve().parents[2] / "reference_solutions_ros1_actionlib" / "actionlib_tutorials"
 FIBONACCI = "actionlib_tutorials/action/Fibonacci"
+# The ids real actionlib's ActionClient gives goals (GoalManager._generate_id, which uses no state of its own).
 REAL_IDS = """
-import rospy, rospy.rostime as clock
-from actionlib.goal_id_generator import GoalIDGenerator
+import rospy, rospy.names, rospy.rostime as clock
+from actionlib.action_client import GoalManager
 clock.set_rostime_initialized(True)
-ids = GoalIDGenerator("/rosgrade")
-for secs, nsecs in ((2, 110000000), (3, 50000000), (12, 5)):
+rospy.names._set_caller_id("/rosgrade")
+for secs, nsecs in ((2, 110000000), (3, 50000000), (12, 5), (7, 999999999)):
     clock._set_rostime(rospy.Time(secs, nsecs))
-    print(ids.generate_ID().id)
+    print(GoalManager._generate_id(None).id)
 """
 
 
@@ -54,11 +55,11 @@ def test_goals_and_cancel_go_out_on_actionlibs_topics_and_the_server_answers(rec
                                                     ("/fibonacci/result", 3_550_000_000)]
     first, second = sent[0][2], sent[2][2]
     assert (first.goal_id.id, first.goal_id.stamp.sec, first.goal_id.stamp.nanosec, first.header.stamp.nanosec,
-            first.goal.order) == ("/rosgrade-1-2.110000000", 2, 110_000_000, 110_000_000, 5)
+            first.goal.order) == ("/rosgrade-1-2.110", 2, 110_000_000, 110_000_000, 5)
     assert (sent[3][2].id, sent[3][2].stamp.sec, sent[3][2].stamp.nanosec) == (second.goal_id.id, 0, 0)
     # SUCCEEDED (3) for the first, PREEMPTED (2) for the cancelled one
     assert [(m.status.goal_id.id, m.status.status) for topic, _, m in sent if topic.endswith("result")] == [
-        ("/rosgrade-1-2.110000000", 3), ("/rosgrade-2-3.50000000", 2)]
+        ("/rosgrade-1-2.110", 3), ("/rosgrade-2-3.050", 2)]
     callers = {(i.topic, i.callerid, i.origin) for i in recording.topics() if i.topic.startswith("/fibonacci/")
                and i.callerid == "/rosgrade"}
     assert callers == {("/fibonacci/goal", "/rosgrade", "grader"), ("/fibonacci/cancel", "/rosgrade", "grader")}
@@ -70,4 +71,4 @@ def test_goal_ids_are_those_real_actionlib_generates() -> None:
     if real.returncode != 0 and "No module named" in real.stderr:
         pytest.skip(f"Debian's python3-actionlib is not installed: {real.stderr.strip()[-200:]}")
     assert real.stdout.split() == [goal_id_text(1, 2_110_000_000), goal_id_text(2, 3_050_000_000),
-                                   goal_id_text(3, 12_000_000_005)]
+                                   goal_id_text(3, 12_000_000_005), goal_id_text(4, 7_999_999_999)]
