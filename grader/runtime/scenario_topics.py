@@ -219,6 +219,7 @@ class TopicPublisher:
         return min(times, default=None)
 
     def tick(self, t: int) -> None:
+        """Publish what is due at t (or look again for a subscription), then serve the latched message."""
         self._now = t
         if self._gone(t):
             return
