@@ -7,8 +7,8 @@ import rospy
 from geometry_msgs.msg import Twist
 from sensor_msgs.msg import LaserScan
 
-GAIN = 2.0  # rad/s per metre of distance error
-MAX_TURN = 1.0  # rad/s
+GAIN = 3.0  # rad/s per metre of distance error
+MAX_TURN = 1.5  # rad/s
 
 latest = None
 

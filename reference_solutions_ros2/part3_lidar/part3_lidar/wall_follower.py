@@ -11,8 +11,8 @@ from rclpy.qos import qos_profile_sensor_data
 from rclpy.signals import SignalHandlerOptions
 from sensor_msgs.msg import LaserScan
 
-GAIN = 2.0  # rad/s per metre of distance error
-MAX_TURN = 1.0  # rad/s
+GAIN = 3.0  # rad/s per metre of distance error
+MAX_TURN = 1.5  # rad/s
 
 
 def nearest(scan, low_deg, high_deg):
