@@ -17,11 +17,12 @@ from grader.launch.ros2_acts import LaunchActs, with_acts
 from grader.launch.ros2_cli import build_type_of, is_ros2_file
 from grader.launch.ros2_specs import ros2_node_specs
 from grader.launch.specs import node_specs
+from grader.provided_nodes import provided_specs
 from grader.recording import Recording, RecordingError
 from grader.recording.ros2_messages import ACTIONS as BUILTIN_ACTIONS
 from grader.recording.ros2_messages import SERVICES as BUILTIN_SERVICES
 from grader.report import RECORDING_FORMAT, SubmissionReport, TaskReport
-from grader.rubric import GRADER_NODES, Node, Rubric, Scenario, load_rubrics
+from grader.rubric import Node, Rubric, Scenario, load_rubrics
 from grader.rubricfile import RubricFile, load_rubric_files, stamp
 from grader.runtime import NodeSpec, RunSpec, ScriptNotFound, check_script, find_script
 from grader.runtime.client_library import (
@@ -161,10 +162,8 @@ def _script_nodes(folder: Path, rubric: Rubric) -> Started:
     if len({spec.flavour for spec in nodes}) > 1:
         raise ScriptNotFound("the task's nodes mix rospy and rclpy scripts; ROS 1 and ROS 2 nodes cannot talk to "
                              "each other: write them all with one client library")
-    # The grader's own nodes (a server the student's client calls) are neither checked nor the student's files.
-    provided = tuple(NodeSpec(script=GRADER_NODES / node.script, args=tuple(node.args),
-                              flavour=client_library(GRADER_NODES / node.script, workspace), provided=True)
-                     for node in rubric.grader_nodes)
+    # The grader's own nodes (a server the student's client calls, teleop) are neither checked nor the student's files.
+    provided = provided_specs(rubric.grader_nodes, nodes[0].flavour, workspace)
     return nodes + provided, findings, [script for script, _ in located]
 
 

@@ -1,0 +1,66 @@
+"""A rubric's [[grader_nodes]] start turtlesim's own nodes as the run's ROS version has them: `turtle_teleop_key.py`
+in an rclpy run is Jazzy's teleop (grader/nodes/turtle_teleop_key_ros2.py), its keys typed from the scenario's stdin,
+with the rotate_absolute server its rotate keys need started beside it; a rospy run keeps Noetic's teleop.
+
+Jazzy's teleop_turtle_key.cpp (ros/ros_tutorials rolling 1.8.2, what Jazzy ships; the snapshot has no jazzy branch)
+sends `r` as a RotateAbsolute goal of 1.5708 and `c` as -2.3562 (lines 250-268); turtle.cpp turns the turtle at 1 rad/s
+the short way and ends the goal within 0.02 rad of theta (rotateAbsoluteAcceptCallback / update).
+"""
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from grader.grading import grade_task
+from grader.metrics.run import RunData
+from grader.provided_nodes import provided_specs, script_for
+from grader.recording import Recording
+from grader.rubric import GraderNode, Rubric
+from grader.workspace import read_workspace
+
+HERE = Path(__file__).resolve().parent
+PROBE = {
+    "id": "teleop_rotate_probe", "title": "teleop's rotate keys", "robot": "turtlesim",
+    "nodes": [{"script": "pose_listener.py"}],
+    "grader_nodes": [{"script": "turtle_teleop_key.py"}],
+    "scenario_defaults": {"command_types": ["geometry_msgs/Twist"], "duration": 5.0},
+    "scenarios": [{"name": "key_r", "stdin": "r", "params": {"theta": 1.5708}},
+                  {"name": "key_c", "stdin": "c", "params": {"theta": -2.3562}}],
+    "criteria": [{"id": "heading", "title": "turtle1 ends at the key's heading", "points": 1,
+                  "metric": "rotate_absolute", "quantity": "heading_error_deg", "tolerance": {"bounds": [0.0, 1.2]}}],
+}
+
+
+def test_a_ros2_run_gets_jazzy_teleop_and_the_rotate_server_a_ros1_run_noetic_teleop(tmp_path) -> None:
+    teleop = [GraderNode(script="turtle_teleop_key.py")]
+    ros2 = provided_specs(teleop, "ros2", read_workspace(tmp_path))
+    assert [(s.script.name, s.flavour, s.provided) for s in ros2] == [
+        ("turtle_teleop_key_ros2.py", "ros2", True), ("turtlesim_rotate_absolute.py", "ros2", True)]
+    ros1 = provided_specs(teleop, "ros1", read_workspace(tmp_path))
+    assert [(s.script.name, s.flavour) for s in ros1] == [("turtle_teleop_key.py", "ros1")]
+    assert script_for("turtle_mimic.py", "ros2") == "turtle_mimic.py"  # no variant: as named
+
+
+def test_a_rubric_listing_the_rotate_server_gets_it_once(tmp_path) -> None:
+    nodes = [GraderNode(script="turtlesim_rotate_absolute.py"), GraderNode(script="turtle_teleop_key.py")]
+    names = [s.script.name for s in provided_specs(nodes, "ros2", read_workspace(tmp_path))]
+    assert names == ["turtlesim_rotate_absolute.py", "turtle_teleop_key_ros2.py"]
+
+
+@pytest.mark.slow
+def test_ros2_teleop_rotate_keys_from_stdin_turn_the_turtle_to_their_absolute_angles(tmp_path) -> None:
+    submission = tmp_path / "submission"
+    submission.mkdir()
+    shutil.copy(HERE / "turtlesim_ros2_nodes" / "pose_listener_ros2.py", submission / "pose_listener.py")
+    report = grade_task(submission, Rubric.model_validate(PROBE), tmp_path / "out")
+    assert report.status == "graded", report.message
+    assert report.score == report.max_score, [c.feedback for c in report.criteria]
+    goals = {}
+    for path in report.recordings:
+        data = RunData.from_recording(Recording.open(path))
+        goals[Path(path).stem] = [c.request["goal"].theta for c in data.service_calls
+                                  if c.service == "/turtle1/rotate_absolute/_action/send_goal"]
+        assert data.trajectory("ground_truth").yaw[0] == 0.0  # it started facing east and turned
+    assert goals == {"key_r": [pytest.approx(1.5708)], "key_c": [pytest.approx(-2.3562)]}
