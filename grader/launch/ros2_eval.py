@@ -53,6 +53,8 @@ def _read(fd: int, popen: subprocess.Popen[bytes], limits: Limits) -> tuple[byte
             return bytes(data), f"did not finish within {limits.wall_s:g} s (a loop that never ends?)"
         ready, _, _ = select.select([fd], [], [], min(left, 0.5))
         if not ready:
+            if popen.poll() is not None:  # ended; a process it left behind may still hold the pipe open
+                return bytes(data), None
             continue
         chunk = os.read(fd, 1 << 16)
         if not chunk:
