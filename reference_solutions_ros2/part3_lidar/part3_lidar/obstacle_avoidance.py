@@ -16,7 +16,7 @@ from sensor_msgs.msg import LaserScan
 RUN_FOR = 90.0  # s
 WALL = 0.35  # m from the wall on the right (as /scan reads it)
 FRONT_CLEAR = 0.5  # m ahead within 25 degrees: turn left on the spot below this
-SPEED = 0.22  # m/s
+SPEED = 0.25  # m/s (the Waffle's limit is 0.26)
 FAR = 0.8  # m: a wall farther than this on the right is not being followed yet
 
 
