@@ -1,6 +1,7 @@
 """Hostile ROS 2 launch files: each gets a clear finding in bounded time, and nothing outside the sandbox changes."""
 from __future__ import annotations
 
+import os
 import time
 from pathlib import Path
 
@@ -33,6 +34,9 @@ ATTACKS = {
                             "    secret = open({secret!r}).read()\n"
                             "    return LaunchDescription([Node(package='turtlesim', executable='turtlesim_node', "
                             "name=secret)])\n"),
+    "leftover": "import os\nimport time\n" + HEAD + ("def generate_launch_description():\n"
+                                                     "    if os.fork() == 0:\n        time.sleep(60)\n"
+                                                     "        os._exit(0)\n    return LaunchDescription([])\n"),
     "print_flood": HEAD + ("def generate_launch_description():\n    while True:\n        print('x' * 65536)\n"),
 }
 
@@ -108,3 +112,19 @@ def test_endless_output_is_bounded(results: dict) -> None:
     assert "File too large" in _message(outcome)  # its output stops at the file-size limit
     assert took < SHORT.wall_s + 5
     assert len(_message(outcome)) < 10_000
+
+
+@pytest.mark.slow
+def test_a_process_left_behind_neither_delays_nor_outlives_the_evaluation(results: dict) -> None:
+    outcome, took = results["leftover"]
+    assert isinstance(outcome, dict) and outcome["error"] is None
+    assert took < 5
+    survivors = [pid for pid in os.listdir("/proc") if pid.isdigit() and _cmdline(pid).endswith("leftover.launch.py")]
+    assert survivors == []
+
+
+def _cmdline(pid: str) -> str:
+    try:
+        return Path(f"/proc/{pid}/cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace").strip()
+    except OSError:
+        return ""
