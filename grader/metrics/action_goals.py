@@ -1,6 +1,6 @@
-"""An action goal the grader sent (a scenario's ``action_goals``, as ``ros2 action send_goal`` sends them), as the
-student's action server handled it: accepted or not, its feedback count and rate, its final status and its result's
-fields against the ones the rubric expects."""
+"""An action goal the grader sent (a scenario's ``action_goals``, as ``ros2 action send_goal`` or actionlib's client
+sends them), as the student's action server handled it: accepted or not, its feedback count and rate, its final
+status and its result's fields against the ones the rubric expects."""
 from __future__ import annotations
 
 import math
@@ -34,8 +34,9 @@ def measure(run: RunData, params: Params) -> Measurement:
     """The goal's fate; a goal the grader never sent (its server never came up) is a MetricError saying so."""
     if params.goal >= len(run.action_goals):
         raise MetricError(f"the grader's goal {params.goal + 1} was never sent: no node served the action (its "
-                          "send_goal, get_result and cancel_goal services) with the action type the task names; is "
-                          "the ActionServer created with that type and spinning?")
+                          "send_goal, get_result and cancel_goal services; with rospy, a SimpleActionServer's goal "
+                          "topic) with the action type the task names; is the ActionServer created with that type and "
+                          "spinning?")
     goal = run.action_goals[params.goal]
     feedback = goal.feedback_t
     span = feedback[-1] - feedback[0] if len(feedback) > 1 else 0.0
