@@ -36,7 +36,8 @@ def measure(run: RunData, params: Params) -> Measurement:
         raise MetricError(f"the grader's goal {params.goal + 1} was never sent: no node served the action (its "
                           "send_goal, get_result and cancel_goal services; with rospy, a SimpleActionServer's goal "
                           "topic) with the action type the task names; is the ActionServer created with that type and "
-                          "spinning?")
+                          "spinning (rospy: a SimpleActionServer made with auto_start=False serves nothing until "
+                          "server.start())?")
     goal = run.action_goals[params.goal]
     feedback = goal.feedback_t
     span = feedback[-1] - feedback[0] if len(feedback) > 1 else 0.0
