@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from grader.interfaces import run_interfaces
+from grader.metrics.action_record import ROS1_REJECTED, ROS1_STATUS
 from grader.recording import Recording
 from grader.runtime import NodeSpec, RunSpec
 from grader.runtime.scenario_actionlib import goal_id_text
@@ -72,3 +73,24 @@ def test_goal_ids_are_those_real_actionlib_generates() -> None:
         pytest.skip(f"Debian's python3-actionlib is not installed: {real.stderr.strip()[-200:]}")
     assert real.stdout.split() == [goal_id_text(1, 2_110_000_000), goal_id_text(2, 3_050_000_000),
                                    goal_id_text(3, 12_000_000_005), goal_id_text(4, 7_999_999_999)]
+
+
+REAL_STATUSES = """
+from actionlib_msgs.msg import GoalStatus
+for name in ("PENDING", "ACTIVE", "PREEMPTED", "SUCCEEDED", "ABORTED", "REJECTED", "PREEMPTING", "RECALLING",
+             "RECALLED", "LOST"):
+    print(name, getattr(GoalStatus, name))
+"""
+# action_msgs/msg/GoalStatus by name, for each actionlib status by name (REJECTED: a goal not accepted)
+AS_ROS2 = {"PENDING": 1, "ACTIVE": 2, "PREEMPTED": 5, "SUCCEEDED": 4, "ABORTED": 6, "PREEMPTING": 3, "RECALLING": 3,
+           "RECALLED": 5, "LOST": 0}
+
+
+@pytest.mark.slow
+def test_actionlib_statuses_read_as_their_ros2_twins_by_real_actionlib_msgs_numbers() -> None:
+    real = subprocess.run(["/usr/bin/python3", "-c", REAL_STATUSES], capture_output=True, text=True, timeout=60)
+    if real.returncode != 0 and "No module named" in real.stderr:
+        pytest.skip(f"Debian's python3-actionlib-msgs is not installed: {real.stderr.strip()[-200:]}")
+    numbers = {name: int(number) for name, number in (line.split() for line in real.stdout.splitlines())}
+    assert numbers["REJECTED"] == ROS1_REJECTED
+    assert {numbers[name]: ros2 for name, ros2 in AS_ROS2.items()} == ROS1_STATUS
