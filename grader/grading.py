@@ -1,6 +1,7 @@
 """Grade a submission: find each task's node, run every scenario of its rubric, score the recordings."""
 from __future__ import annotations
 
+import fnmatch
 import hashlib
 import shutil
 import tempfile
@@ -172,9 +173,11 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:
     the grader carries out for a ROS 2 launch file's ros2 command lines (LaunchError if it cannot be read)."""
     task = rubric.launch
     names = [task.file, *task.aliases]
-    found = next((candidates(folder, name) for name in names if candidates(folder, name)), None)
+    where = _launch_package(folder, task.package) if task.package else folder
+    found = next((candidates(where, name) for name in names if candidates(where, name)), None)
     if not found:
-        raise ScriptNotFound(f"no launch file named {' or '.join(names)} in the submission; put it in your "
+        inside = f"package {where.name}" if task.package else "the submission"
+        raise ScriptNotFound(f"no launch file named {' or '.join(names)} in {inside}; put it in your "
                              "package's launch/ folder")
     if is_ros2_file(found[0], build_type_of(found[0])):
         return _ros2_launch_nodes(folder, found[0], rubric)
@@ -195,6 +198,16 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:
     for script in scripts:
         findings += check_script(script)
     return (nodes, findings, [found[0], *scripts]), LaunchActs()
+
+
+def _launch_package(folder: Path, pattern: str) -> Path:
+    """The folder of the submission's package a rubric's [launch] names (package.xml's name; wildcards allowed)."""
+    packages = read_workspace(folder).folders if folder.is_dir() else {}
+    names = sorted(name for name in packages if fnmatch.fnmatchcase(name, pattern))
+    if not names:
+        raise ScriptNotFound(f"no package named {pattern} in the submission (the <name> in package.xml); the task "
+                             f"runs `ros2 launch {pattern} <file>` (or roslaunch), so name your package that way")
+    return packages[names[0]]
 
 
 def _ros2_launch_nodes(folder: Path, file: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:

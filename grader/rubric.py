@@ -107,6 +107,8 @@ class LaunchFile(_Model):
     or ``ros2 launch pkg FILE name:=value ...`` (a ROS 2 .launch.py, .launch.xml or .launch.yaml) would."""
 
     file: str = Field(pattern=r"^[\w.-]+\.launch(\.xml|\.py|\.ya?ml)?$")
+    # The package the file is in, by package.xml's name; shell wildcards allowed ("com2009_team*": each team's own).
+    package: str | None = Field(None, pattern=r"^[a-z0-9_*?\[\]]+$")
     aliases: list[str] = []
     args: dict[str, str] = {}
     # roslaunch refuses a script without `chmod +x`; true runs it with python3 anyway (and says so).

@@ -126,17 +126,28 @@ def test_a_forgotten_odometry_printer_loses_exactly_the_printing_criteria(square
     assert _lost(square_graded["square_only.launch.py"]) == {"pose_output", "output_rate"}
 
 
-def test_a_com2009_task_launch_file_scores_full_marks(tmp_path_factory: pytest.TempPathFactory) -> None:
-    """figure_of_eight started as COM2009 marks it, `ros2 launch com2009_team99 task1.launch.py`."""
-    folder = tmp_path_factory.mktemp("figure_rubric")
+def _figure_rubric(folder: Path, package: str):
+    """figure_of_eight started as COM2009 marks it: `ros2 launch com2009_teamXX task1.launch.py`."""
     text = (ROOT / "rubrics" / "figure_of_eight.toml").read_text()
     nodes = '[[nodes]]\nscript = "figure_eight.py"\n'
     assert nodes in text
-    (folder / "figure_of_eight.toml").write_text(text.replace(nodes, '[launch]\nfile = "task1.launch.py"\n'))
-    report = grade_task(SUBMISSIONS / "com2009_team99", load_rubric(folder / "figure_of_eight.toml"),
-                        tmp_path_factory.mktemp("figure"))
+    launch = f'[launch]\nfile = "task1.launch.py"\npackage = "{package}"\n'
+    (folder / "figure_of_eight.toml").write_text(text.replace(nodes, launch))
+    return load_rubric(folder / "figure_of_eight.toml")
+
+
+def test_a_com2009_task_launch_file_scores_full_marks(tmp_path_factory: pytest.TempPathFactory) -> None:
+    rubric = _figure_rubric(tmp_path_factory.mktemp("figure_rubric"), "com2009_team*")
+    report = grade_task(SUBMISSIONS / "com2009_team99", rubric, tmp_path_factory.mktemp("figure"))
     assert _lost(report) == set()
     assert report.score == report.max_score
+
+
+def test_a_launch_package_the_submission_lacks_is_named(tmp_path: Path) -> None:
+    rubric = _figure_rubric(tmp_path, "com2009_team1")
+    report = grade_task(SUBMISSIONS / "com2009_team99", rubric, tmp_path / "out")
+    assert report.status == "not_found"
+    assert report.message.startswith("no package named com2009_team1 in the submission (the <name> in package.xml)")
 
 
 def test_the_launch_files_ros2_commands_are_carried_out_when_launch_runs_them(
