@@ -527,7 +527,8 @@ def cmd_launch(args: argparse.Namespace) -> int:
     from grader.launch import ros2_cli
 
     if ros2_cli.is_ros2_target(args.file, args.args, args.workspace):
-        mode = "json" if args.json else "show-args" if args.show_args else "nodes"
+        mode = "json" if args.json else "show-args" if args.show_args else "dump-params" if args.dump_params \
+            else "nodes"
         try:
             text, notes = ros2_cli.command(args.file, args.args, args.workspace, mode)
         except ros2_cli.Ros2LaunchError as exc:

@@ -165,8 +165,14 @@ def is_ros2_target(file: Path, words: list[str], workspace_dir: Path | None) -> 
 def command(file: Path, words: list[str], workspace_dir: Path | None, mode: str) -> tuple[str, list[str]]:
     """`rosgrade launch` on a ROS 2 launch file: `PATH args...` or `PKG FILE args...` (installed files only)."""
     words = list(words)
+    if mode == "dump-params":
+        raise Ros2LaunchError("--dump-params prints roslaunch's parameter server; for a ROS 2 launch file use --json "
+                              "(each node's parameter files) or --show-args")
     if not file.is_file() and words and ":=" not in words[0]:
-        file = find_installed(workspace_dir or Path.cwd(), str(file), words.pop(0))
+        try:
+            file = find_installed(workspace_dir or Path.cwd(), str(file), words.pop(0))
+        except WorkspaceError as exc:
+            raise Ros2LaunchError(str(exc)) from None
     values: dict[str, str] = {}
     for item in words:
         name, sep, value = item.partition(":=")

@@ -151,3 +151,10 @@ def test_json_is_the_same_every_time(capsys: pytest.CaptureFixture[str]) -> None
         outputs.append(capsys.readouterr().out)
     assert outputs[0] == outputs[1]
     assert "launch_params_1" in outputs[0]
+
+
+def test_command_line_mistakes_are_one_clear_line(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    assert main(["launch", "--workspace", str(tmp_path / "none"), "course_pkg", "task1.launch.py", "--nodes"]) == 2
+    assert capsys.readouterr().err == f"rosgrade: error: {tmp_path / 'none'} does not exist\n"
+    assert main(["launch", str(LAUNCH / "task1.launch.py"), "--dump-params"]) == 2
+    assert "for a ROS 2 launch file use --json" in capsys.readouterr().err
