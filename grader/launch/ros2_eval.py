@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from grader.launch.known import DEFAULT_ENV
 from grader.launch.ros2_index import launch_index
 from grader.runtime import confine
 from grader.runtime.process import _child_setup, node_environment, rlimit_pairs
@@ -82,8 +83,10 @@ def evaluate(file: Path, workspace: Workspace, arguments: list[tuple[str, str]],
         env = node_environment(NodeSpec(script=file, flavour="ros2"), "", plan.home)
         env.pop("ROSGRADE_CHANNEL", None)
         env.pop("ROS_MASTER_URI", None)
+        # What a course machine's shell sets (ROS sourced, the TurtleBot3 model in ~/.bashrc), for os.environ reads.
         env.update(ROSGRADE_LAUNCH_FD=str(write_fd), ROSGRADE_LAUNCH_INDEX=json.dumps(launch_index(workspace)),
-                   ROS_DISTRO="jazzy", ROS_VERSION="2")
+                   ROS_DISTRO="jazzy", ROS_VERSION="2", ROS_PYTHON_VERSION="3",
+                   TURTLEBOT3_MODEL=DEFAULT_ENV["TURTLEBOT3_MODEL"])
         pairs = rlimit_pairs(limits, limits.processes if plan.uid is not None or plan.sandboxed else None)
         uid = None if plan.sandboxed else plan.uid
         log_path = workdir / "output.txt"

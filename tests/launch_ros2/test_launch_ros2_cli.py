@@ -158,3 +158,15 @@ def test_command_line_mistakes_are_one_clear_line(capsys: pytest.CaptureFixture[
     assert capsys.readouterr().err == f"rosgrade: error: {tmp_path / 'none'} does not exist\n"
     assert main(["launch", str(LAUNCH / "task1.launch.py"), "--dump-params"]) == 2
     assert "for a ROS 2 launch file use --json" in capsys.readouterr().err
+
+
+def test_the_launch_file_sees_a_course_machines_environment(tmp_path: Path,
+                                                            capsys: pytest.CaptureFixture[str]) -> None:
+    shutil.copytree(WS / "course_pkg", tmp_path / "course_pkg")
+    launch = tmp_path / "course_pkg" / "launch" / "model.launch.py"
+    launch.write_text("import os\nfrom launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n\n"
+                      "def generate_launch_description():\n"
+                      "    return LaunchDescription([Node(package='course_pkg', executable='mover', "
+                      "name=os.environ['TURTLEBOT3_MODEL'] + '_' + os.environ['ROS_DISTRO'])])\n")
+    assert main(["launch", str(launch), "--nodes"]) == 0
+    assert capsys.readouterr().out == "/waffle_jazzy  (course_pkg mover)\n"
