@@ -21,6 +21,7 @@ from sim.profile import ProfileError, ScanConfig, load_robot
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _WITH_METRES = re.compile(rf"({_NUMBER})\s*(?:m\b|metres\b|meters\b)")
 _WITH_DEGREES = re.compile(rf"({_NUMBER})\s*(?:°|deg\b|degs\b|degrees\b)")
+_WITH_RADIANS = re.compile(rf"({_NUMBER})\s*(?:rad\b|rads\b|radians\b)")
 _ANY = re.compile(_NUMBER)
 # What rclpy logs when a subscription cannot match a publisher's QoS (tests/conformance_ros2/qos_matrix_jazzy.json).
 _INCOMPATIBLE = re.compile(r"New publisher discovered on topic '(?P<topic>[^']*)', offering incompatible QoS\..*"
@@ -38,12 +39,14 @@ class Params(TrajectoryParams):
 
 
 def reading(text: str) -> tuple[float, float] | None:
-    """(distance m, angle deg) from a line: numbers marked m and deg (or °) if it has them, else its first two."""
-    metres, degrees = _WITH_METRES.search(text), _WITH_DEGREES.search(text)
+    """(distance m, angle deg) from a line: numbers marked m and deg, ° or rad if it has them, else its first two."""
+    metres, degrees, radians = _WITH_METRES.search(text), _WITH_DEGREES.search(text), _WITH_RADIANS.search(text)
     if metres and degrees:
         return float(metres.group(1)), float(degrees.group(1))
+    if metres and radians:
+        return float(metres.group(1)), math.degrees(float(radians.group(1)))
     numbers = _ANY.findall(text)
-    if len(numbers) >= 2 and not (metres or degrees):
+    if len(numbers) >= 2 and not (metres or degrees or radians):
         return float(numbers[0]), float(numbers[1])
     return None
 

@@ -30,6 +30,7 @@ def test_readings_with_and_without_units() -> None:
     assert reading("Closest object ahead: 1.23 m at -12.5 degrees") == (1.23, -12.5)
     assert reading("angle 7° distance 0.8m") == (0.8, 7.0)
     assert reading("1.5, 30") == (1.5, 30.0)
+    assert reading("0.9 m away, -0.5 rad") == (0.9, pytest.approx(math.degrees(-0.5)))
     assert reading("no numbers here") is None and reading("only 2.0 m") is None
 
 
