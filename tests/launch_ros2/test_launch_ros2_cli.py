@@ -25,7 +25,7 @@ def test_package_and_file_with_an_argument(capsys: pytest.CaptureFixture[str]) -
 def test_nodes_say_what_starts_them(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["launch", str(LAUNCH / "example_event_handlers.launch.py"), "--nodes"]) == 0
     assert capsys.readouterr().out == (
-        "/turtlesim1/sim  (turtlesim turtlesim_node)\n"
+        "/turtlesim1/sim  (turtlesim turtlesim_node) (simulated by rosgrade)\n"
         "ros2 service call /turtlesim1/spawn turtlesim/srv/Spawn {x: 2, y: 2, theta: 0.2}  [when turtlesim_node-1 "
         "starts]\n"
         "ros2 param set /turtlesim1/sim background_r 120  [when ros2-2 exits]\n")
