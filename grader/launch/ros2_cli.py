@@ -97,8 +97,10 @@ def nodes_text(result: dict[str, Any]) -> str:
     lines = []
     for process in result.get("processes", []):
         if process["kind"] == "node":
-            external = " (external: not run by rosgrade)" if process.get("external") else \
-                " (simulated by rosgrade)" if process.get("world") else ""
+            external = " (external: not run by rosgrade)" if process.get("external") else ""
+            if process.get("world"):
+                simulated = process["executable"] == "turtlesim_node"
+                external = " (simulated by rosgrade)" if simulated else " (not run by rosgrade)"
             lines.append(f"{_full_name(process)}  ({process['package']} {process['executable']}){external}"
                          f"{_trigger(process)}")
         else:
