@@ -222,8 +222,8 @@ class Scenario(_Model):
         default_factory=list, description="messages the grader publishes (rostopic pub / ros2 topic pub), in time order")
     command_types: list[str] | None = Field(
         None, description="velocity command types the robot's base takes, e.g. ['geometry_msgs/Twist', "
-        "'geometry_msgs/TwistStamped']; None: what the run's client library's robot takes (ROS 1: Twist; "
-        "ROS 2 Jazzy: TwistStamped)")
+        "'geometry_msgs/TwistStamped']; None: what the robot takes from the run's client library (turtlesim: "
+        "Twist; a ROS 1 robot: Twist; a ROS 2 Jazzy robot: TwistStamped)")
 
     @model_validator(mode="before")
     @classmethod

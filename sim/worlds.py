@@ -16,6 +16,17 @@ def open_world(scenario: Scenario, flavour: str = "ros1") -> World | TurtlesimWo
     return TurtlesimWorld(scenario, flavour) if scenario.robot == TURTLESIM else World(scenario)
 
 
+def command_types(scenario: Scenario, flavour: str) -> tuple[str, ...]:
+    """The velocity command types the scenario's robot takes from nodes of ``flavour``: its ``command_types`` if it
+    names them; turtlesim takes Twist in every ROS version; the Jazzy TurtleBot3 (and the COM2009 simulation) drive
+    on TwistStamped only, the ROS 1 robots on Twist."""
+    if scenario.command_types:
+        return tuple(scenario.command_types)
+    if scenario.robot == TURTLESIM or flavour == "ros1":
+        return ("geometry_msgs/Twist",)
+    return ("geometry_msgs/TwistStamped",)
+
+
 def start_pose(scenario: Scenario) -> Pose2D:
     """Where the run starts: the scenario's ``initial_pose``, except that turtlesim spawns turtle1 at the centre of
     its window when the scenario names none."""

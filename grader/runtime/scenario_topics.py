@@ -46,6 +46,8 @@ class Graph(Protocol):
 
     def ready_ns(self, publisher: Endpoint) -> int: ...
 
+    def drive(self, publisher: Endpoint, data: bytes, t: int) -> None: ...
+
 
 def build_message(wire: Wire, type_name: str, values: Mapping[str, object], where: str = "") -> object:
     """A message of ``type_name`` from a YAML-like mapping, every field not given at its zero value, as
@@ -198,11 +200,11 @@ class TopicPublisher:
         return self._end is not None and t >= self._end
 
     def _reached(self, t: int) -> list:
-        """The node subscribers (node index, handle) the publisher reaches at t (the robot's base takes the
-        scenario's script, not the grader's publications)."""
+        """Who the publisher reaches at t: node subscribers (node index, handle) and, on a velocity command topic, the
+        robot's base (ROBOT), as ``ros2 topic pub /turtle1/cmd_vel`` drives a turtle."""
         if t < self._endpoint.registered_ns or self._gone(t):
             return []
-        return [key for key in self._graph.receivers(self._endpoint, t) if key != ROBOT]
+        return self._graph.receivers(self._endpoint, t)
 
     def next_ns(self) -> int | None:
         """When the loop must stop for this command (a message due, a latched message to go out or to reach a
@@ -255,7 +257,7 @@ class TopicPublisher:
         self._write(planned.topic, planned.type, data, t, callerid=self._pub.callerid, latching=planned.latch,
                     origin="grader")
         for key in self._reached(t):
-            self._hand(key)
+            self._hand(key, t)
 
     def _serve_latched(self, t: int) -> None:
         """A held latched message goes out once the publisher connects, and to each subscriber that comes later."""
@@ -268,12 +270,15 @@ class TopicPublisher:
                         origin="grader")
         for key in self._reached(t):
             if key not in held.receivers:
-                self._hand(key)
+                self._hand(key, t)
 
-    def _hand(self, key: tuple[int, int]) -> None:
-        index, ident = key
-        node = self._graph.nodes[index]
-        node.deliveries.append((ident, self._data, (self._pub.callerid, self._pub.latch)))
-        node.link.state.subscribers[ident].count += 1
+    def _hand(self, key: tuple[int, int] | str, t: int) -> None:
+        if key == ROBOT:
+            self._graph.drive(self._endpoint, self._data, t)
+        else:
+            index, ident = key
+            node = self._graph.nodes[index]
+            node.deliveries.append((ident, self._data, (self._pub.callerid, self._pub.latch)))
+            node.link.state.subscribers[ident].count += 1
         if self._held is not None:
             self._held.receivers.add(key)

@@ -37,6 +37,7 @@ from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from grader.runtime.wire import wire_for
 from sim import WORLD_NODE_NAMES, CommandSample, TurtlesimWorld, World, WorldTopic, open_world
+from sim.worlds import command_types
 
 # Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
 # published before that are lost. A new subscriber to a running publisher (Gazebo's /odom) gets the next message.
@@ -126,8 +127,7 @@ class Session:
         self.discovery_ns = self.wire.discovery_ns
         self.catalog = self.wire.catalog
         # The velocity command types the robot's base takes (the scenario's choice, else the flavour's robot).
-        self.command_types = frozenset(self.wire.canonical(t) for t in spec.scenario.command_types) \
-            if spec.scenario.command_types else frozenset(self.wire.default_command_types)
+        self.command_types = frozenset(self.wire.canonical(t) for t in command_types(spec.scenario, self.wire.name))
         self.world: World | TurtlesimWorld | None = None  # built after the node processes start, while they import
         self.start_ns = spec.scenario.start_ns
         self.end_ns = spec.scenario.end_ns
@@ -555,14 +555,18 @@ class Session:
             if publisher.latched is not None:
                 publisher.latched.receivers.add(key)
 
+    def drive(self, publisher: Endpoint, data: bytes, t: int) -> None:
+        """A velocity command reaches the robot's base at t (from a node, or the scenario's ``topic pub``)."""
+        if self.ahead is not None:  # the command in force, repeated (see Lookahead._inert)
+            self.ahead.renewed_ns = t
+        else:
+            linear, angular = self.wire.decode_command(publisher.type, data)
+            self.world.command(publisher.topic, linear=linear, angular=angular)
+        self.robot_command = (publisher.type, data)
+
     def _hand_over(self, key, node: _Node, publisher: Endpoint, data: bytes, t: int) -> None:
         if key == ROBOT:
-            if self.ahead is not None:  # the command in force, repeated (see Lookahead._inert)
-                self.ahead.renewed_ns = t
-            else:
-                linear, angular = self.wire.decode_command(publisher.type, data)
-                self.world.command(publisher.topic, linear=linear, angular=angular)
-            self.robot_command = (publisher.type, data)
+            self.drive(publisher, data, t)
             self.received[publisher.topic] = self.received.get(publisher.topic, 0) + 1
         else:
             index, ident = key

@@ -49,7 +49,6 @@ class Wire:
     log_type: str
     string_type: str
     twist_type: str  # what the grader's scripted driver records
-    default_command_types: tuple[str, ...]  # what a robot's base takes unless the scenario says otherwise
     command_decoders: Mapping[str, Callable[[bytes], tuple[Vec3, Vec3]]]
     _log: Callable[[int, int, int, str, str, str, str, int, list[str]], bytes]  # as `log` takes them
     _string: Callable[[str], bytes]
@@ -124,7 +123,7 @@ def _ros1_wire() -> Wire:
                   LogSample: ros1.world_log_bytes,
                   ContactSample: lambda sample, seq: ros1.string_bytes(contact_text(sample))},
         log_type="rosgraph_msgs/Log", string_type="std_msgs/String", twist_type=TWIST,
-        default_command_types=(TWIST,), command_decoders={TWIST: ros1.decode_twist},
+        command_decoders={TWIST: ros1.decode_twist},
         _log=ros1.log_bytes, _string=ros1.string_bytes, _twist=ros1.twist_bytes)
 
 
@@ -138,8 +137,6 @@ def _ros2_wire() -> Wire:
                   TurtlePoseSample: cdr.turtle_pose_cdr, ColorSample: cdr.color_cdr, LogSample: cdr.world_log_cdr,
                   ContactSample: lambda sample, seq: cdr.string_cdr(contact_text(sample))},
         log_type="rcl_interfaces/msg/Log", string_type="std_msgs/msg/String", twist_type=TWIST2,
-        # The Jazzy TurtleBot3 (and the COM2009 simulation) drive on TwistStamped only; Humble's on Twist.
-        default_command_types=(TWIST_STAMPED2,),
         command_decoders={TWIST2: cdr.decode_twist_cdr, TWIST_STAMPED2: cdr.decode_twist_stamped_cdr},
         _log=_log_cdr, _string=cdr.string_cdr, _twist=cdr.twist_cdr)
 

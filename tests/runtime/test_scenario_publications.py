@@ -83,3 +83,17 @@ def test_nested_fields_take_yaml_values_and_default_the_rest() -> None:
 def test_once_with_a_rate_is_refused_by_the_scenario() -> None:
     with pytest.raises(ValueError, match="give once, or a rate and times, not both"):
         Scenario(duration=1.0, publications=[_pub(0.0, "x", once=True, rate=2)])
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("flavour, twist", [("ros1", "geometry_msgs/Twist"), ("ros2", "geometry_msgs/msg/Twist")])
+def test_topic_pub_on_a_turtles_cmd_vel_drives_it(tmp_path: Path, flavour: str, twist: str) -> None:
+    """As in the ROS 2 launch tutorial (`ros2 topic pub -r 1 /turtlesim1/turtle1/cmd_vel ...`): the grader's command
+    reaches the robot's base, while the run's node only listens."""
+    listener = "rospy_listener.py" if flavour == "ros1" else "rclpy_listener.py"
+    drive = {"t": 0.0, "topic": "/turtle1/cmd_vel", "type": twist, "values": {"linear": {"x": 1.0}}, "rate": 1}
+    scenario = Scenario(robot="turtlesim", duration=4.0, publications=[drive])
+    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=NODES / listener, flavour=flavour),)),
+        tmp_path / "run.mcap", tmp_path / "run.log")
+    poses = [m.x for _, m in Recording.open(tmp_path / "run.mcap").messages("/turtle1/pose")]
+    assert poses[-1] - poses[0] > 2.0  # about 1 m/s while commands come each second (turtlesim holds one for 1 s)
