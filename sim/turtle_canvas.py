@@ -11,6 +11,7 @@ import numpy as np
 CANVAS_PX = 500
 METER_PX = 45.0  # one metre is the turtle image's height
 DEFAULT_BACKGROUND = (69, 86, 255)
+PATH_EMPTY = (255, 255, 255)  # an unpainted pixel of Jazzy's transparent path image, as its colour sensor reads it
 
 Rgb = tuple[int, int, int]
 
@@ -30,12 +31,16 @@ class Canvas:
 
     ``inked`` marks every pixel a pen line has covered since the canvas was made, whatever the colour; ``clear``
     leaves it alone. It is the pen's whole trail (what coverage counts), where ``pixels`` is what the window shows.
+    ``painted`` marks the pixels a pen covered since the last ``clear``: Jazzy keeps them in a transparent path image
+    over the background, which its colour sensor reads (white where nothing is painted) and which a new background
+    colour shows through at once (``repaint``).
     """
 
     def __init__(self, background: Rgb = DEFAULT_BACKGROUND) -> None:
         self.background = _check_rgb(background)
         self.pixels = np.empty((CANVAS_PX, CANVAS_PX, 3), dtype=np.uint8)
         self.inked = np.zeros((CANVAS_PX, CANVAS_PX), dtype=bool)
+        self.painted = np.zeros((CANVAS_PX, CANVAS_PX), dtype=bool)
         self.clear()
 
     def clear(self, background: Rgb | None = None) -> None:
@@ -43,13 +48,24 @@ class Canvas:
         if background is not None:
             self.background = _check_rgb(background)
         self.pixels[:] = self.background
+        self.painted[:] = False
+
+    def repaint(self, background: Rgb) -> None:
+        """A new background under the pen lines, which stay (Jazzy's window repaints as a parameter changes)."""
+        self.background = _check_rgb(background)
+        self.pixels[~self.painted] = self.background
 
     def color_at(self, x_px: float, y_px: float) -> Rgb:
         """The pixel at a screen point, rounded as Qt's ``QPointF::toPoint`` does (half away from zero)."""
-        column = min(max(int(np.floor(x_px + 0.5)), 0), CANVAS_PX - 1)
-        row = min(max(int(np.floor(y_px + 0.5)), 0), CANVAS_PX - 1)
+        row, column = _pixel(x_px, y_px)
         r, g, b = self.pixels[row, column]
         return (int(r), int(g), int(b))
+
+    def path_color_at(self, x_px: float, y_px: float) -> Rgb:
+        """The path image's pixel at a screen point: the pen's colour, or white where no pen painted since the last
+        clear (Jazzy fills it with ``qRgba(255, 255, 255, 0)``, whose red, green and blue are 255)."""
+        row, column = _pixel(x_px, y_px)
+        return self.color_at(x_px, y_px) if self.painted[row, column] else PATH_EMPTY
 
     def line(self, start_px: tuple[float, float], end_px: tuple[float, float], rgb: Rgb, width: int) -> None:
         """Draw a square-capped segment of ``width`` px between two screen points."""
@@ -76,3 +92,11 @@ class Canvas:
             covered = (along >= -half) & (along <= length + half) & (np.abs(across) <= half)
         self.pixels[lo_y:hi_y + 1, lo_x:hi_x + 1][covered] = _check_rgb(rgb)
         self.inked[lo_y:hi_y + 1, lo_x:hi_x + 1] |= covered
+        self.painted[lo_y:hi_y + 1, lo_x:hi_x + 1] |= covered
+
+
+def _pixel(x_px: float, y_px: float) -> tuple[int, int]:
+    """(row, column) of a screen point, rounded as Qt's ``QPointF::toPoint`` does, kept on the image."""
+    column = min(max(int(np.floor(x_px + 0.5)), 0), CANVAS_PX - 1)
+    row = min(max(int(np.floor(y_px + 0.5)), 0), CANVAS_PX - 1)
+    return row, column

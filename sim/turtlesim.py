@@ -13,10 +13,13 @@ answers them in its next update's ``spinOnce``, before moving the turtles, which
 The background is turtle_frame.cpp's: its private ``background_r/g/b`` parameters on the run's parameter server
 (``use_parameters``), given their defaults at start when unset, and read again by every ``/clear`` and ``/reset``.
 
-A ROS 2 run has this same world on the ROS 2 wire: Jazzy's turtle.cpp moves, times out and clamps a turtle as noetic's
-does. What Jazzy's does differently is not modelled, as the world is not told its wire: ``linear.y`` only with its
-``holonomic`` parameter, parameters as the node's own, the colour sensor reading the transparent path image (white
-where no pen drew), the wording of two errors.
+A ROS 2 run (``flavour`` "ros2") has Jazzy's turtlesim (ros/ros_tutorials rolling 1.8.2, the version Jazzy ships),
+which moves, times out and clamps a turtle as noetic's does, with these differences: a command's ``linear.y`` is taken
+only while the node's ``holonomic`` parameter is true (turtle.cpp velocityCallback), the colour sensor reads the
+transparent path image, white where no pen painted since the last clear (turtle.cpp update, turtle_frame.cpp clear),
+and a taken name is refused as "A turtle named [...]" (noetic: "A turtled named"). The background parameters are
+Jazzy's declared integers; a change made through the world (``set_parameter``) shows at once, as Jazzy repaints on
+every parameter event of its own node, where noetic waits for /clear.
 """
 from __future__ import annotations
 
@@ -31,6 +34,7 @@ from typing import Protocol
 from sim.samples import (ColorSample, CommandSample, GroundTruthSample, LogSample, Sample, ServiceResult,
                          TurtlePoseSample, WorldService, WorldTopic)
 from sim.scenario import Scenario, ScenarioTimes
+from sim import turtlesim_params
 from sim.turtle_canvas import CANVAS_PX, DEFAULT_BACKGROUND, METER_PX, Canvas, Rgb
 
 UPDATE_NS = 16_000_000  # the Qt update timer's interval
@@ -52,6 +56,8 @@ INFO = 2
 ERROR = 8
 # turtlesim's private parameters for the background colour (turtle_frame.cpp); DEFAULT_BACKGROUND holds their defaults.
 BACKGROUND_PARAMS = tuple(f"{NODE_NAME}/background_{c}" for c in "rgb")
+HOLONOMIC_PARAM = f"{NODE_NAME}/holonomic"  # Jazzy's turtle_frame.cpp declares it, false
+ROS2 = "ros2"
 # What a C++ double-to-int conversion gives on x86 for NaN and values out of int's range.
 _INT_INDEFINITE = -(1 << 31)
 # Characters roscpp's names::validate accepts after the first one of a graph resource name.
@@ -244,6 +250,9 @@ class TurtlesimWorld(ScenarioTimes):
         """turtle_frame.cpp's four, then each live turtle's three (turtle.cpp)."""
         declared = [WorldService("/clear", "std_srvs/Empty"), WorldService("/reset", "std_srvs/Empty"),
                     WorldService("/spawn", "turtlesim/Spawn"), WorldService("/kill", "turtlesim/Kill")]
+        if self.flavour == ROS2:  # the node's own parameter services, as every rclcpp node serves them
+            declared += [WorldService(f"{NODE_NAME}/get_parameters", "rcl_interfaces/GetParameters"),
+                         WorldService(f"{NODE_NAME}/set_parameters", "rcl_interfaces/SetParameters")]
         for turtle in self.turtles.values():
             declared += [WorldService(turtle.topic("set_pen"), "turtlesim/SetPen"),
                          WorldService(turtle.topic("teleport_absolute"), "turtlesim/TeleportAbsolute"),
@@ -264,6 +273,8 @@ class TurtlesimWorld(ScenarioTimes):
         for name, default in zip(BACKGROUND_PARAMS, DEFAULT_BACKGROUND):
             if not params.has(name):
                 params.set(name, default)
+        if self.flavour == ROS2 and not params.has(HOLONOMIC_PARAM):
+            params.set(HOLONOMIC_PARAM, False)
         self.params = params
         self.canvas.clear(background(params))
 
@@ -377,6 +388,8 @@ class TurtlesimWorld(ScenarioTimes):
         Qt's ``QImage::pixel`` returns off the image, 12345 as an RGB value."""
         if not (math.isfinite(turtle.x) and math.isfinite(turtle.y_screen)):
             return (0, 12345 >> 8 & 0xFF, 12345 & 0xFF)
+        if self.flavour == ROS2:  # Jazzy reads its transparent path image, not the window
+            return self.canvas.path_color_at(turtle.x * METER_PX, turtle.y_screen * METER_PX)
         return self.canvas.color_at(turtle.x * METER_PX, turtle.y_screen * METER_PX)
 
     # -- turtles -------------------------------------------------------------------------------------------------
@@ -385,11 +398,13 @@ class TurtlesimWorld(ScenarioTimes):
         """The live turtle whose cmd_vel ``topic`` is, if any."""
         return next((t for t in self.turtles.values() if t.topic("cmd_vel") == topic), None)
 
-    @staticmethod
-    def _receive(turtle: Turtle, t_ns: int, linear: tuple[float, float, float],
+    def _receive(self, turtle: Turtle, t_ns: int, linear: tuple[float, float, float],
                  angular: tuple[float, float, float]) -> None:
+        """turtle.cpp's velocityCallback: Jazzy's keeps the last ``linear.y`` unless ``holonomic`` is true now."""
         turtle.last_command_ns = t_ns
-        turtle.linear_x, turtle.linear_y, turtle.angular = float(linear[0]), float(linear[1]), float(angular[2])
+        turtle.linear_x, turtle.angular = float(linear[0]), float(angular[2])
+        if self.flavour != ROS2 or (self.params is not None and self.params.get(HOLONOMIC_PARAM) is True):
+            turtle.linear_y = float(linear[1])
 
     def _spawn_default(self) -> LogSample:
         """turtle1 at the centre, heading east (turtlesim's start and /reset)."""
@@ -417,6 +432,9 @@ class TurtlesimWorld(ScenarioTimes):
         """Each served service's handler, by resolved name."""
         handlers: dict[str, Callable[[Request], ServiceResult]] = {
             "/clear": self._clear, "/reset": self._reset, "/spawn": self._spawn_service, "/kill": self._kill}
+        if self.flavour == ROS2:
+            handlers[f"{NODE_NAME}/get_parameters"] = self._get_parameters
+            handlers[f"{NODE_NAME}/set_parameters"] = self._set_parameters
         for turtle in self.turtles.values():
             handlers[turtle.topic("set_pen")] = partial(self._set_pen, turtle)
             handlers[turtle.topic("teleport_absolute")] = partial(self._teleport, turtle, False)
@@ -442,7 +460,8 @@ class TurtlesimWorld(ScenarioTimes):
         response is left empty, which is what a ROS 2 caller gets back)."""
         name = str(request["name"])
         if name in self.turtles:
-            return ServiceResult(False, {"name": ""}, (self._log(ERROR, f"A turtled named [{name}] already exists"),))
+            taken = "A turtle named" if self.flavour == ROS2 else "A turtled named"  # Jazzy fixed noetic's typo
+            return ServiceResult(False, {"name": ""}, (self._log(ERROR, f"{taken} [{name}] already exists"),))
         problem = _name_problem(name)
         if problem:
             said = self._log(ERROR, f"Exception thrown while processing service call: {problem}")
@@ -457,6 +476,26 @@ class TurtlesimWorld(ScenarioTimes):
             said = self._log(ERROR, f"Tried to kill turtle [{name}], which does not exist")
             return ServiceResult(False, {}, (said,))
         return ServiceResult(True, {})
+
+    def _get_parameters(self, request: Request) -> ServiceResult:
+        """Jazzy's get_parameters: each named parameter's value (none when one is not declared)."""
+        names = [str(name) for name in request["names"]]  # type: ignore[attr-defined]
+        return ServiceResult(True, {"values": turtlesim_params.get_parameters(NODE_NAME, self._tree(), names)})
+
+    def _set_parameters(self, request: Request) -> ServiceResult:
+        """Jazzy's set_parameters, one parameter at a time; a new background colour shows at once (turtle_frame.cpp
+        repaints on its own node's parameter events, and paintEvent reads the parameters)."""
+        parameters: list = request["parameters"]  # type: ignore[assignment]
+        results, changed = turtlesim_params.set_parameters(NODE_NAME, self._tree(), parameters)
+        if any(name.startswith("background_") for name in changed):
+            self.canvas.repaint(background(self.params))
+        return ServiceResult(True, {"results": results})
+
+    def _tree(self) -> Parameters:
+        """The run's parameter tree (the world's start hands it over; TurtlesimError before that)."""
+        if self.params is None:
+            raise TurtlesimError("turtlesim's parameters are served once the run's parameter server is given")
+        return self.params
 
     @staticmethod
     def _set_pen(turtle: Turtle, request: Request) -> ServiceResult:

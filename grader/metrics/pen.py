@@ -14,7 +14,8 @@ state the recorded service calls set, using the world's own ``Turtle`` and ``Can
 - each pose draws the line from where the turtle was, unless the pose is where the turtle already is;
 - the recorded parameter changes are replayed among the calls, so ``/clear`` and ``/reset`` fill the canvas with the
   background the parameters gave then, and the canvas starts with the one they gave at the start (the default
-  background in a recording without them).
+  background in a recording without them); in a ROS 2 run a change of the background shows at once, under the lines
+  (Jazzy's turtlesim repaints on its own parameter events).
 
 turtle1 starts at its first recorded pose (the world's moves before that are not in the recording). Its positions
 come from ground truth (float64) when asked and recorded; spawned turtles have only their turtlesim/Pose (float32),
@@ -30,7 +31,7 @@ import numpy as np
 from grader.metrics.run import TURTLE_POSE_TOPIC, ParamChange, RunData, ServiceCall, Trajectory
 from grader.nodelib.common import rosgrade_params
 from sim.turtle_canvas import Canvas
-from sim.turtlesim import CANVAS_M, CENTRE, DEFAULT_TURTLE, Turtle, background
+from sim.turtlesim import BACKGROUND_PARAMS, CANVAS_M, CENTRE, DEFAULT_TURTLE, Turtle, background
 
 # (topic, x, y, theta) of one recorded pose
 Pose = tuple[str, float, float, float]
@@ -83,6 +84,8 @@ def redraw(run: RunData, source: Literal["ground_truth", "odometry"] = "ground_t
             params.change(event)
             if event is run.param_changes[0]:  # the tree the world started with: its canvas was filled from it
                 canvas.clear(background(params))
+            elif run.client_library == "rclpy" and event.name in BACKGROUND_PARAMS:  # Jazzy repaints at once
+                canvas.repaint(background(params))
         elif isinstance(event, ServiceCall):
             _serve(event, live, canvas, params)
         else:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 from grader.nodelib.common import rosgrade_channel as ch
 from grader.runtime.node_link import Endpoint, ProtocolViolation, ServiceAnswer, ServiceCall, ServiceReply
+from grader.runtime.plain_values import nested, plain
 from grader.runtime.wire import Wire
 from sim import WorldService
 
@@ -79,7 +80,8 @@ class _WorldServer:
         return True
 
     def take(self, router: ServiceRouter, caller: Caller, request: bytes, t: int) -> ServiceReply:
-        result = router.world.call(self.name, router.wire.request_values(self.type, request))
+        values = {name: plain(value) for name, value in router.wire.request_values(self.type, request).items()}
+        result = router.world.call(self.name, values)
         for sample in result.samples:
             router.world_sample(sample)
         router.world_changed()  # a spawned or killed turtle's topics and services
@@ -87,7 +89,8 @@ class _WorldServer:
             return ServiceReply(ch.SERVICE_FAILED, result.error)
         # A ROS 2 server has no failure reply: what turtlesim's callbacks return is ignored and the response goes out
         # as the callback left it (/spawn of a taken name answers an empty name).
-        return ServiceReply(ch.SERVICE_OK, response=router.wire.response_bytes(self.type, result.response))
+        response = nested(router.wire.catalog, router.wire.service_part(self.type, "Response"), result.response)
+        return ServiceReply(ch.SERVICE_OK, response=router.wire.response_bytes(self.type, response))
 
 
 @dataclass
