@@ -161,6 +161,13 @@ class JointStatesConfig(_Model):
     velocities: bool = False
 
 
+class ScanVersion(_Model):
+    """What a ROS version's simulation publishes differently from the profile's scanner (unset: the same)."""
+
+    rate_hz: int | None = Field(None, gt=0)
+    angle_max: float | None = None
+
+
 class ScanConfig(_Model):
     """A planar laser scanner: ``samples`` beams from ``angle_min`` to ``angle_max`` (inclusive) about the frame's z.
 
@@ -179,6 +186,13 @@ class ScanConfig(_Model):
     range_min: float = Field(ge=0)
     range_max: PositiveFloat
     noise_stddev: float = Field(0.0, ge=0)
+    ros2: ScanVersion | None = None  # the ROS 2 (Jazzy) simulation's differences
+
+    def for_flavour(self, flavour: str) -> ScanConfig:
+        """The scanner as the simulation of a ROS version ("ros1", "ros2") publishes it."""
+        if flavour != "ros2" or self.ros2 is None:
+            return self
+        return self.model_copy(update={k: v for k, v in self.ros2.model_dump().items() if v is not None})
 
     @model_validator(mode="after")
     def _check(self) -> ScanConfig:
@@ -231,6 +245,9 @@ class RobotProfile(_Model):
                 config = getattr(mode.sensors, sensor)
                 if config is not None:
                     rates[f"sensors.{sensor}.rate_hz"] = config.rate_hz
+            scan = mode.sensors.scan
+            if scan is not None and scan.ros2 is not None and scan.ros2.rate_hz is not None:
+                rates["sensors.scan.ros2.rate_hz"] = scan.ros2.rate_hz
             for field, rate in rates.items():
                 if PHYSICS_HZ % rate:
                     raise ValueError(

@@ -110,7 +110,7 @@ class Snapshot:
 class World(ScenarioTimes):
     """One run of a robot: ``command`` it, ``advance_to`` a time, collect the samples it published on the way."""
 
-    def __init__(self, scenario: Scenario, profile: RobotProfile | None = None) -> None:
+    def __init__(self, scenario: Scenario, profile: RobotProfile | None = None, flavour: str = "ros1") -> None:
         self.scenario = scenario
         self.profile = profile if profile is not None else load_robot(scenario.robot)
         self.mode_name = scenario.base_mode or self.profile.default_mode
@@ -167,8 +167,10 @@ class World(ScenarioTimes):
             self._sensors.append((steps_per_tick(sensors.imu.rate_hz), imu))
         if sensors.joint_states is not None:
             self._sensors.append((steps_per_tick(sensors.joint_states.rate_hz), JointStates(sensors.joint_states, robot)))
-        if sensors.scan is not None:
-            self._sensors.append((steps_per_tick(sensors.scan.rate_hz), Scanner(sensors.scan, robot, self.data, scenario.seed)))
+        # The scanner as the simulation of the nodes' ROS version publishes it (Jazzy's Waffle: 10 Hz, Noetic's: 5 Hz).
+        self._scan = sensors.scan.for_flavour(flavour) if sensors.scan is not None else None
+        if self._scan is not None:
+            self._sensors.append((steps_per_tick(self._scan.rate_hz), Scanner(self._scan, robot, self.data, scenario.seed)))
         self._output_periods = tuple(
             p for p in (self._odometry_every, self._tf_every, self._truth_every, *(p for p, _ in self._sensors))
             if p is not None
@@ -218,8 +220,8 @@ class World(ScenarioTimes):
         if sensors.joint_states is not None:
             declared.append(WorldTopic(sensors.joint_states.topic, "sensor_msgs/JointState",
                                         sensors.joint_states.rate_hz))
-        if sensors.scan is not None:
-            declared.append(WorldTopic(sensors.scan.topic, "sensor_msgs/LaserScan", sensors.scan.rate_hz))
+        if self._scan is not None:
+            declared.append(WorldTopic(self._scan.topic, "sensor_msgs/LaserScan", self._scan.rate_hz))
         if self._obstacle_names:
             declared.append(WorldTopic(CONTACT_TOPIC, "std_msgs/String", GROUND_TRUTH_HZ, to_nodes=False))
         return tuple(declared)

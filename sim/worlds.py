@@ -11,9 +11,9 @@ WORLD_NODE_NAMES = frozenset({world.NODE_NAME, turtlesim.NODE_NAME})  # the node
 
 def open_world(scenario: Scenario, flavour: str = "ros1") -> World | TurtlesimWorld:
     """The world that runs ``scenario`` (both keep the contract in DEVELOPERS.md, so callers need not know which), as
-    the ROS version of the run's nodes has it (``flavour``: "ros1" or "ros2"; turtlesim differs between Noetic's and
-    Jazzy's)."""
-    return TurtlesimWorld(scenario, flavour) if scenario.robot == TURTLESIM else World(scenario)
+    the ROS version of the run's nodes has it (``flavour``: "ros1" or "ros2"; turtlesim and the TurtleBot3's LiDAR
+    differ between Noetic's and Jazzy's)."""
+    return TurtlesimWorld(scenario, flavour) if scenario.robot == TURTLESIM else World(scenario, flavour=flavour)
 
 
 def command_types(scenario: Scenario, flavour: str) -> tuple[str, ...]:

@@ -116,6 +116,8 @@ def measure(run: RunData, params: Params) -> Measurement:
     except ProfileError:
         raise MetricError("the recording does not say which robot ran, so its LiDAR is unknown") from None
     scan = profile.modes[profile.default_mode].sensors.scan
+    if scan is not None:  # as the simulation of the node's ROS version publishes it (Jazzy's Waffle: 10 Hz)
+        scan = scan.for_flavour("ros2" if run.client_library == "rclpy" else "ros1")
     if scan is None:
         raise MetricError("this robot has no LiDAR to check readings against")
     traj = run.trajectory(params.source)

@@ -100,3 +100,17 @@ def test_noise_is_the_profiles_gaussian_and_the_seeds() -> None:
     differences = np.array([scans[1].ranges[i] - scans[2].ranges[i] for i in finite])
     # the difference of two independent N(0, 0.01²) draws has stddev 0.01·√2
     assert differences.std() == pytest.approx(0.01 * math.sqrt(2), rel=0.25)
+
+
+def test_a_ros2_run_gets_the_jazzy_simulations_lidar() -> None:
+    """Jazzy's model.sdf: the Waffle's gpu_lidar at 10 Hz (Noetic's xacro: 5 Hz), both robots' over 0..6.28 rad."""
+    from sim.worlds import open_world
+
+    for robot, rates in (("turtlebot3_waffle", {"ros1": 5, "ros2": 10}), ("turtlebot3_burger", {"ros1": 5, "ros2": 5})):
+        for flavour, rate in rates.items():
+            world = open_world(Scenario(robot=robot, world="corridor", start="entrance"), flavour)
+            world.listen(None)
+            scans = [s for s in world.advance_to(world.start_ns + SECOND) if isinstance(s, ScanSample)]
+            assert len(scans) == rate and [t.rate_hz for t in world.publications if t.topic == "/scan"] == [rate]
+            assert scans[-1].angle_max == (6.28 if flavour == "ros2" else 6.28319)
+            assert scans[-1].angle_increment == pytest.approx(scans[-1].angle_max / 359)
