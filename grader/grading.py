@@ -30,6 +30,7 @@ from grader.runtime.client_library import (
     ROS1, ROS2, client_library, entry_point, import_roots, package_findings,
 )
 from grader.runtime.confine import detect, package_folder
+from grader.runtime.int_fields import int_field_findings
 from grader.runtime.scripts import candidates
 from grader.runtime.parallel import Outcome, Run, run_all
 from grader.runtime.session import RunError, node_log_path
@@ -113,9 +114,10 @@ def _locate(folder: Path, node: Node, only_node: bool) -> tuple[Path, list[str]]
 
 
 def _present(folder: Path, rubric: Rubric) -> bool:
-    if rubric.launch is not None:
-        return any(candidates(folder, name) for name in [rubric.launch.file, *rubric.launch.aliases])
-    return all(any(candidates(folder, n) for n in _script_names(node)) for node in rubric.nodes)
+    if rubric.launch is not None and any(candidates(folder, name)
+                                         for name in [rubric.launch.file, *rubric.launch.aliases]):
+        return True
+    return bool(rubric.nodes) and all(any(candidates(folder, n) for n in _script_names(node)) for node in rubric.nodes)
 
 
 def _present_tasks(folder: Path, rubrics: Mapping[str, Rubric]) -> list[str]:
@@ -159,7 +161,7 @@ def _script_nodes(folder: Path, rubric: Rubric) -> Started:
         # rosrun's needs (shebang, execute bit) are not `ros2 run`'s: package_findings says what it would trip over
         findings += notes + check_script(script, rosrun=spec.flavour == ROS1)
         if spec.flavour == ROS2:
-            findings += package_findings(script, spec.entry, workspace)
+            findings += package_findings(script, spec.entry, workspace) + int_field_findings(script)
     if len({spec.flavour for spec in nodes}) > 1:
         raise ScriptNotFound("the task's nodes mix rospy and rclpy scripts; ROS 1 and ROS 2 nodes cannot talk to "
                              "each other: write them all with one client library")
@@ -170,15 +172,24 @@ def _script_nodes(folder: Path, rubric: Rubric) -> Started:
 
 def _launch_nodes(folder: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:
     """The nodes the student's launch file starts, as `roslaunch pkg file args...` (or `ros2 launch`) would, and what
-    the grader carries out for a ROS 2 launch file's ros2 command lines (LaunchError if it cannot be read)."""
+    the grader carries out for a ROS 2 launch file's ros2 command lines (LaunchError if it cannot be read); without
+    the launch file, the rubric's [[nodes]] when it names some too."""
     task = rubric.launch
     names = [task.file, *task.aliases]
-    where = _launch_package(folder, task.package) if task.package else folder
-    found = next((candidates(where, name) for name in names if candidates(where, name)), None)
-    if not found:
-        inside = f"package {where.name}" if task.package else "the submission"
-        raise ScriptNotFound(f"no launch file named {' or '.join(names)} in {inside}; put it in your "
-                             "package's launch/ folder")
+    try:
+        where = _launch_package(folder, task.package) if task.package else folder
+        found = next((candidates(where, name) for name in names if candidates(where, name)), None)
+        if not found:
+            inside = f"package {where.name}" if task.package else "the submission"
+            raise ScriptNotFound(f"no launch file named {' or '.join(names)} in {inside}; put it in your "
+                                 "package's launch/ folder")
+    except ScriptNotFound as exc:
+        if not rubric.nodes:
+            raise
+        try:
+            return _script_nodes(folder, rubric), LaunchActs()
+        except ScriptNotFound as missing:
+            raise ScriptNotFound(f"{missing}, and {exc}") from None
     if is_ros2_file(found[0], build_type_of(found[0])):
         return _ros2_launch_nodes(folder, found[0], rubric)
     packages = find_packages(folder)

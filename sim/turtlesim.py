@@ -235,6 +235,11 @@ class TurtlesimWorld(ScenarioTimes):
         return tuple(turtle.topic("cmd_vel") for turtle in self.turtles.values())
 
     @property
+    def known_as(self) -> str:
+        """What feedback calls this world (a robot world is "this robot")."""
+        return "turtlesim"
+
+    @property
     def node_name(self) -> str:
         """The ROS node that publishes this world's topics (the callerid recordings name)."""
         return NODE_NAME

@@ -10,6 +10,7 @@ from grader import exact
 from grader.metrics.base import Measurement, Metric, MetricError, TrajectoryParams
 from grader.metrics.motion import first_motion, path_length
 from grader.metrics.run import Commands, RunData
+from sim.scenario import TURTLESIM
 
 
 @dataclass(frozen=True)
@@ -95,7 +96,8 @@ def measure(run: RunData, params: Params) -> Measurement:
     window = traj.between((started or 0.0) + params.settle_s, end)
     driven = path_length(window)
     if started is None or driven < params.min_path:
-        raise MetricError(f"the robot drove only {path_length(traj):.2f} m, so there is no circle to measure")
+        mover = "the turtle" if run.robot == TURTLESIM else "the robot"
+        raise MetricError(f"{mover} drove only {path_length(traj):.2f} m, so there is no circle to measure")
     fit = fit_circle(window.x, window.y)
     v, w = _median_command(run.commands, end)
     return {

@@ -11,7 +11,10 @@ from grader.metrics.run import RunData
 _EXCEPTION = re.compile(r"^(?:[A-Za-z_][\w]*\.)*[A-Za-z_]\w*(?:Error|Exception|Interrupt|Exit)\b(?::.*)?$")
 
 FACTS = frozenset({"path_length", "exception", "exit_code", "exit_signal", "status", "n_commands", "command_topics",
-                   "client_library", "ignored_command_types", "command_type"})
+                   "client_library", "ignored_command_types", "command_type", "int_fields"})
+# The smallest normal double: a command component between 0 and this is what rclpy sends for an int written into a
+# float64 field (its internal size word read as a double, about 5e-324; grader/runtime/int_fields.py).
+_TINY = 2.2250738585072014e-308
 
 
 def last_exception(run: RunData) -> str:
@@ -40,4 +43,13 @@ def run_facts(run: RunData) -> Measurement:
         "client_library": run.client_library,
         "ignored_command_types": run.ignored_command_types,
         "command_type": run.command_type,
+        "int_fields": int_fields(run),
     }
+
+
+def int_fields(run: RunData) -> str:
+    """The command components that carried denormal values ("linear.x, angular.z"), '' when none did."""
+    parts = (("linear", run.commands.linear), ("angular", run.commands.angular))
+    found = [f"{part}.{axis}" for part, values in parts for i, axis in enumerate("xyz")
+             if len(values) and bool(((values[:, i] != 0.0) & (abs(values[:, i]) < _TINY)).any())]
+    return ", ".join(found)

@@ -42,6 +42,9 @@ def diagnose(session: Session) -> list[str]:
     for node in session.nodes:
         state = node.link.state
         label = node.outcome.script
+        if node.outcome.status == "not_started":
+            notes.append(f"{label} {node.outcome.message}.")
+            continue
         if node.spec.provided:  # the grader's own node: only its failure is worth a line (a request it choked on)
             if state.exception:
                 notes.append(f"the grader's {label} stopped with an uncaught {state.exception.get('type')}: "
@@ -78,13 +81,16 @@ def _endpoint_notes(session: Session, node: _Node, command_topics: tuple[str, ..
     """Findings about one node's publishers and subscribers: wrong types or topics, messages lost at the start."""
     state, label = node.link.state, node.outcome.script
     notes: list[str] = []
+    # The world as users know it when it names itself ("turtlesim"), else the robot.
+    known_as = getattr(session.world, "known_as", None)
+    here, world = known_as or "this robot", known_as or "the robot"
     for pub in state.publishers.values():
         if pub.topic in command_topics and pub.type not in session.command_types:
-            notes.append(f"{pub.topic} carries {' or '.join(sorted(session.command_types))} on this robot, but "
-                         f"{label} published {pub.type} there: the robot ignores it.")
+            notes.append(f"{pub.topic} carries {' or '.join(sorted(session.command_types))} on {here}, but "
+                         f"{label} published {pub.type} there: {world} ignores it.")
         elif (pub.type in session.command_types and pub.topic not in command_topics and pub.count
               and robot_received == 0):
-            notes.append(f"Your node published {_count(pub.count, 'message')} on {pub.topic}; this robot "
+            notes.append(f"Your node published {_count(pub.count, 'message')} on {pub.topic}; {here} "
                          f"listens on {' or '.join(command_topics)}.")
         # Only worth saying when it cost the student something: a loop that publishes on loses nothing that matters.
         if (pub.dropped_before_connect and pub.count - pub.dropped_before_connect < 3
