@@ -1,6 +1,7 @@
 """A rubric's [[grader_nodes]] start turtlesim's own nodes as the run's ROS version has them: `turtle_teleop_key.py`
 in an rclpy run is Jazzy's teleop (grader/nodes/turtle_teleop_key_ros2.py), its keys typed from the scenario's stdin,
-with the rotate_absolute server its rotate keys need started beside it; a rospy run keeps Noetic's teleop.
+with the rotate_absolute server its rotate keys need started beside it; a rospy run keeps Noetic's teleop. `mimic`
+(turtle_mimic.py, ROS 2 only) is started with the remaps the rubric gives, as the launch tutorial's file does.
 
 Jazzy's teleop_turtle_key.cpp (ros/ros_tutorials rolling 1.8.2, what Jazzy ships; the snapshot has no jazzy branch)
 sends `r` as a RotateAbsolute goal of 1.5708 and `c` as -2.3562 (lines 250-268); turtle.cpp turns the turtle at 1 rad/s
@@ -11,6 +12,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from grader.grading import grade_task
@@ -64,3 +66,28 @@ def test_ros2_teleop_rotate_keys_from_stdin_turn_the_turtle_to_their_absolute_an
                                   if c.service == "/turtle1/rotate_absolute/_action/send_goal"]
         assert data.trajectory("ground_truth").yaw[0] == 0.0  # it started facing east and turned
     assert goals == {"key_r": [pytest.approx(1.5708)], "key_c": [pytest.approx(-2.3562)]}
+
+
+MIMIC = {
+    "id": "mimic_probe", "title": "mimic from a rubric", "robot": "turtlesim",
+    "nodes": [{"script": "leader.py"}],
+    "grader_nodes": [{"script": "turtle_mimic.py", "args": ["--ros-args", "-r", "input/pose:=/turtle1/pose",
+                                                            "-r", "output/cmd_vel:=/turtle2/cmd_vel"]}],
+    "scenario_defaults": {"command_types": ["geometry_msgs/Twist"], "duration": 3.0},
+    "scenarios": [{"name": "nominal"}],
+    "criteria": [{"id": "no_wall_hit", "title": "no wall hit", "points": 1, "metric": "wall_hits",
+                  "quantity": "n_wall_hits", "tolerance": {"bounds": [0.0, 0.0]}}],
+}
+
+
+@pytest.mark.slow
+def test_mimic_from_a_rubric_drives_turtle2_as_turtle1_drives(tmp_path) -> None:
+    submission = tmp_path / "submission"
+    submission.mkdir()
+    shutil.copy(HERE / "turtlesim_ros2_nodes" / "spawn_and_lead_ros2.py", submission / "leader.py")
+    report = grade_task(submission, Rubric.model_validate(MIMIC), tmp_path / "out")
+    assert report.status == "graded", report.message
+    data = RunData.from_recording(Recording.open(report.recordings[0]))
+    leader, follower = data.trajectory("ground_truth"), data.poses["/turtle2/pose"]
+    travelled = [float(np.hypot(np.diff(p.x), np.diff(p.y)).sum()) for p in (leader, follower)]
+    assert travelled[0] > 1.0 and travelled[1] == pytest.approx(travelled[0], abs=0.05)
