@@ -279,7 +279,9 @@ class Rubric(_Model):
     description: str = ""
     robot: str
     nodes: list[Node] = []
-    launch: LaunchFile | None = None  # instead of `nodes`: the nodes the student's launch file starts
+    # the nodes the student's launch file starts; with `nodes` too, the launch file when the submission holds it, else
+    # the nodes (one task marked both ways: COM2009's `ros2 launch com2009_teamXX task1.launch.py`, a rospy script)
+    launch: LaunchFile | None = None
     grader_nodes: list[GraderNode] = []  # with `nodes`: the grader's own nodes, started after the student's
     scenarios: list[Scenario] = Field(min_length=1)
     criteria: list[Criterion] = Field(min_length=1)
@@ -310,10 +312,10 @@ class Rubric(_Model):
 
     @model_validator(mode="after")
     def _cross_references(self) -> Rubric:
-        if bool(self.nodes) == (self.launch is not None):
+        if not self.nodes and self.launch is None:
             raise ValueError("a rubric names the node(s) to run in [[nodes]] or a launch file in [launch]: "
-                             "give exactly one of them")
-        if self.grader_nodes and not self.nodes:
+                             "give at least one of them")
+        if self.grader_nodes and (self.launch is not None or not self.nodes):
             raise ValueError("grader_nodes run beside the student's [[nodes]]; a launch file starts its own")
         names = [s.name for s in self.scenarios]
         _unique(names, "scenario name")
