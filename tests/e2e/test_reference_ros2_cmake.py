@@ -22,8 +22,9 @@ def _task(report, task):
     return next(t for t in report.tasks if t.id == task)
 
 
-def test_the_cmake_package_is_found_as_the_three_tasks(graded):
-    assert sorted(t.id for t in graded(CMAKE_TWIN).tasks) == sorted(TASKS)
+def test_the_cmake_package_is_found_as_the_three_tasks_and_its_launch_file(graded):
+    # its launch/square_and_odom.launch.py is square_odom_launch (scored in test_reference_ros2_launch.py)
+    assert sorted(t.id for t in graded(CMAKE_TWIN).tasks) == sorted((*TASKS, "square_odom_launch"))
 
 
 @pytest.mark.parametrize("task", TASKS)

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""COM2009 Assignment 2 Task 1 in rclpy: two 1 m loops, anticlockwise then clockwise, back at the start in about
-60 s, logging the pose relative to the start once a second."""
+"""COM2009 Assignment 2 Task 1 in rclpy (the team package's scripts/, started by launch/task1.launch.py): two 1 m
+loops, anticlockwise then clockwise, back at the start in about 60 s, logging the pose relative to the start once a
+second."""
 
 import math
 

@@ -1,0 +1,29 @@
+import os
+from glob import glob
+
+from setuptools import find_packages, setup
+
+package_name = 'turtlebot_launch'
+
+setup(
+    name=package_name,
+    version='0.0.0',
+    packages=find_packages(exclude=['test']),
+    data_files=[
+        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
+        ('share/' + package_name, ['package.xml']),
+        # every launch file, as the ROS 2 launch tutorial installs them
+        (os.path.join('share', package_name, 'launch'), glob(os.path.join('launch', '*launch.[pxy][yma]*'))),
+    ],
+    install_requires=['setuptools'],
+    zip_safe=True,
+    maintainer='rosgrade',
+    maintainer_email='rosgrade@example.org',
+    description='ROS 2 reference for seed 003 "Using launch files": move_turtlebot with a distance parameter',
+    license='MIT',
+    entry_points={
+        'console_scripts': [
+            'move_turtlebot = turtlebot_launch.move_turtlebot:main',
+        ],
+    },
+)
