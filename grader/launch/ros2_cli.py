@@ -8,7 +8,7 @@ from typing import Any
 
 from grader.launch.ros2_eval import Evaluation, Ros2LaunchError, evaluate
 from grader.launch.ros2_hints import hint_for
-from grader.launch.ros2_index import installed, workspace_for
+from grader.launch.ros2_index import installed, not_installed, workspace_for
 from grader.workspace import WorkspaceError, read_workspace
 
 __all__ = ["Ros2LaunchError", "command", "is_ros2_target"]
@@ -53,12 +53,7 @@ def find_installed(workspace_dir: Path, package: str, file_name: str) -> Path:
         if installed(found, path):
             return path
     if candidates:
-        where = candidates[0].relative_to(found.folder)
-        raise Ros2LaunchError(
-            f"file '{file_name}' was not found in the share directory of package '{package}' which is at "
-            f"'/opt/ros/jazzy/share/{package}'. {where} is in the package but its build does not install it: list "
-            "its folder in setup.py's data_files (ament_python) or in install(DIRECTORY launch DESTINATION "
-            "share/${PROJECT_NAME}) in CMakeLists.txt (ament_cmake).")
+        raise Ros2LaunchError(not_installed(found, candidates[0]))
     raise Ros2LaunchError(f"file '{file_name}' was not found in the share directory of package '{package}'")
 
 

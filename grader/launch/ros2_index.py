@@ -22,6 +22,19 @@ def installed(package: Package, path: Path) -> bool:
     return any(resolved == folder.resolve() or folder.resolve() in resolved.parents for folder in package.share)
 
 
+def not_installed(package: Package, path: Path) -> str:
+    """What `ros2 launch PACKAGE FILE` prints for a file its package's build does not install, and the line to add."""
+    folder = path.parent.relative_to(package.folder).as_posix() if package.folder in path.parents else "launch"
+    if package.build_type == "ament_python":
+        line = (f"add (os.path.join('share', package_name, '{folder}'), glob('{folder}/*')) to data_files in "
+                "setup.py (with `import os` and `from glob import glob`)")
+    else:
+        line = f"add install(DIRECTORY {folder} DESTINATION share/${{PROJECT_NAME}}) to CMakeLists.txt"
+    return (f"file '{path.name}' was not found in the share directory of package '{package.name}' which is at "
+            f"'{INSTALL}/{package.name}/share/{package.name}': {path.name} is in the package, but its build does "
+            f"not install it. To install it, {line}, then colcon build again.")
+
+
 def launch_index(workspace: Workspace) -> dict[str, dict[str, Any]]:
     """name -> share folder, install prefix and executables, for ament_index_python inside the sandbox."""
     found: dict[str, dict[str, Any]] = {}

@@ -11,7 +11,7 @@ from grader.launch.ros2_acts import LaunchActs, launch_acts
 from grader.launch.ros2_cli import external_include_notes
 from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_eval import Ros2LaunchError, evaluate
-from grader.launch.ros2_index import installed
+from grader.launch.ros2_index import installed, not_installed
 from grader.launch.specs import MAX_NODES
 from grader.runtime.client_library import client_library, entry_point, import_roots
 from grader.runtime.spec import NodeSpec, file_arg
@@ -49,9 +49,7 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
     for its ros2 command lines; LaunchError if it fails."""
     package = workspace.enclosing(file)
     if package is not None and package.build_type != "catkin" and not installed(package, file):
-        raise LaunchError(f"{file.name} is in package {package.name} but its build does not install it, so "
-                          f"`ros2 launch {package.name} {file.name}` would not find it: list its folder in setup.py's "
-                          "data_files or in install(DIRECTORY ... DESTINATION share/${PROJECT_NAME}).")
+        raise LaunchError(not_installed(package, file))
     try:
         result = evaluate(file, workspace, list(args.items())).result
     except Ros2LaunchError as exc:

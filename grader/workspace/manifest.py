@@ -14,6 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from xml.parsers import expat
 
+from grader.workspace.data_files import DataFiles, read_data_files
+
 MAX_BYTES = 256 * 1024  # a package.xml or setup.py is a few kB
 _NAME = re.compile(rb"<name>\s*([^<\s]+)\s*</name>")
 _DEPENDS = {"depend", "build_depend", "exec_depend", "run_depend", "buildtool_depend", "build_export_depend"}
@@ -112,6 +114,8 @@ class SetupPy:
     packages: tuple[str, ...] | None = None  # None: find_packages() (or nothing said): folders with __init__.py
     excluded: tuple[str, ...] = ()  # find_packages(exclude=[...])
     package_dir: str = ""  # package_dir={'': 'src'} (catkin's layout)
+    # data_files' (destination, sources) entries; None when they cannot be read without running setup.py
+    data_files: tuple[DataFiles, ...] | None = ()
 
 
 class _Constants:
@@ -180,5 +184,6 @@ def read_setup(path: Path) -> SetupPy:
                 for key, value in zip(keyword.value.keys, keyword.value.values):
                     if key is not None and constants.text(key) == "":
                         package_dir = constants.text(value) or ""
-    return SetupPy(constants.names.get("package_name"), tuple(scripts), packages, tuple(excluded), package_dir)
+    return SetupPy(constants.names.get("package_name"), tuple(scripts), packages, tuple(excluded), package_dir,
+                   read_data_files(tree, constants.text))
 

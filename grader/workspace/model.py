@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Literal, TypedDict
 
 from grader.workspace import cmake
+from grader.workspace.data_files import installed_share
 from grader.workspace.manifest import (
     Manifest, ManifestError, SetupPy, name_only, read_manifest, read_regular, read_setup,
 )
@@ -74,7 +75,7 @@ class Package:
     executables: tuple[Executable, ...] = ()
     python_packages: tuple[PythonPackage, ...] = ()
     interfaces: tuple[Interface, ...] = ()
-    share: tuple[Path, ...] = ()  # folders installed under share/<package> (launch, config)
+    share: tuple[Path, ...] = ()  # folders (install(DIRECTORY)) and files (data_files) installed under share/<pkg>
     findings: tuple[str, ...] = ()
     setup_package_name: str | None = None  # ament_python: setup.py's package_name
 
@@ -131,7 +132,7 @@ def _setup_python(folder: Path, setup: SetupPy) -> list[PythonPackage]:
     return [PythonPackage(name, base / name) for name in tops if (base / name).is_dir()]
 
 
-def _ament_python(folder: Path) -> _Parts:
+def _ament_python(folder: Path, package: str) -> _Parts:
     try:
         setup = read_setup(folder / "setup.py")
     except ManifestError as exc:
@@ -143,7 +144,9 @@ def _ament_python(folder: Path) -> _Parts:
         if sep and colon and module.strip():
             script = folder.joinpath(*module.strip().split(".")).with_suffix(".py")
             executables.append(Executable(name.strip(), script, f"{module.strip()}:{function.strip()}"))
-    share = tuple(p for p in (folder / "launch", folder / "config") if p.is_dir())
+    # what data_files installs under share/<name>; when it cannot be read as data, the usual launch/ and config/
+    share = tuple(p for p in (folder / "launch", folder / "config") if p.is_dir()) if setup.data_files is None \
+        else installed_share(folder, package, setup.data_files)
     return {"executables": tuple(executables), "python_packages": tuple(_setup_python(folder, setup)),
             "share": share, "setup_package_name": setup.package_name}
 
@@ -349,7 +352,7 @@ def read_package(folder: Path) -> Package | None:
     build_type = _build_type(manifest, folder)
     parts: _Parts
     if build_type == "ament_python":
-        parts = _ament_python(folder)
+        parts = _ament_python(folder, manifest.name)
     elif (folder / "CMakeLists.txt").is_file():
         parts = _cmake_package(folder, manifest.name, manifest, build_type)
     elif build_type == "ament_cmake":
