@@ -19,9 +19,26 @@ _OBSTACLES_ONLY = np.array([1 if group == OBSTACLE_GROUP else 0 for group in ran
 _UINT64 = (1 << 64) - 1
 
 
+class NoiseStream:
+    """Standard normal draws that depend on the seed and the time alone: a Philox stream keyed by the seed, at the time
+    as its counter, as ``Philox(key=seed, counter=t_ns)`` draws them. One generator is reused and its state set for
+    each call (making a new one costs about 60 µs, five times the draws of a sweep)."""
+
+    def __init__(self, seed: int) -> None:
+        self._key = np.array([seed & _UINT64, 0], dtype=np.uint64)
+        self._bits = np.random.Philox(key=seed & _UINT64)
+        self._normal = np.random.Generator(self._bits).standard_normal
+
+    def draws(self, t_ns: int, samples: int) -> np.ndarray:
+        self._bits.state = {"bit_generator": "Philox",
+                            "state": {"counter": np.array([t_ns, 0, 0, 0], dtype=np.uint64), "key": self._key},
+                            "buffer": np.zeros(4, dtype=np.uint64), "buffer_pos": 4, "has_uint32": 0, "uinteger": 0}
+        return self._normal(samples)
+
+
 def noise(seed: int, t_ns: int, samples: int) -> np.ndarray:
     """``samples`` standard normal draws for the sweep at ``t_ns`` of a run with ``seed`` (the same on every call)."""
-    return np.random.Generator(np.random.Philox(key=seed & _UINT64, counter=t_ns)).standard_normal(samples)
+    return NoiseStream(seed).draws(t_ns, samples)
 
 
 class _Sensor:
@@ -102,7 +119,7 @@ class Scanner(_Sensor):
 
     def __init__(self, config: ScanConfig, robot: RobotModel, data: mujoco.MjData, seed: int = 0) -> None:
         self._config = config
-        self._seed = seed & _UINT64
+        self._noise = NoiseStream(seed)
         self._topic = config.topic
         self._model, self._data = robot.model, data
         self._body = robot.base_body
@@ -135,7 +152,7 @@ class Scanner(_Sensor):
             hit &= dist >= c.range_min
             hit &= dist <= c.range_max
             if c.noise_stddev:
-                dist += c.noise_stddev * noise(self._seed, t_ns, c.samples)
+                dist += c.noise_stddev * self._noise.draws(t_ns, c.samples)
                 np.clip(dist, c.range_min, c.range_max, out=dist)
             dist[~hit] = math.inf
             ranges = tuple(dist.tolist())

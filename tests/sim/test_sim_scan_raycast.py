@@ -114,3 +114,13 @@ def test_a_ros2_run_gets_the_jazzy_simulations_lidar() -> None:
             assert len(scans) == rate and [t.rate_hz for t in world.publications if t.topic == "/scan"] == [rate]
             assert scans[-1].angle_max == (6.28 if flavour == "ros2" else 6.28319)
             assert scans[-1].angle_increment == pytest.approx(scans[-1].angle_max / 359)
+
+
+def test_the_reused_noise_stream_draws_what_a_fresh_philox_draws() -> None:
+    """The scanner's one generator, its state set per sweep, gives the draws of Philox(key=seed, counter=t_ns)."""
+    from sim.sensors import NoiseStream
+
+    stream = NoiseStream(-3)
+    for t_ns in (5, 200_000_000, 91_400_000_000, 200_000_000):
+        fresh = np.random.Generator(np.random.Philox(key=-3 & (2 ** 64 - 1), counter=t_ns)).standard_normal(360)
+        assert (stream.draws(t_ns, 360) == fresh).all()
