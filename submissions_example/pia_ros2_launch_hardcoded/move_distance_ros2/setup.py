@@ -1,0 +1,20 @@
+import os
+from glob import glob
+
+from setuptools import find_packages, setup
+
+package_name = 'move_distance_ros2'
+
+setup(
+    name=package_name,
+    version='0.0.0',
+    packages=find_packages(exclude=['test']),
+    data_files=[
+        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
+        ('share/' + package_name, ['package.xml']),
+        (os.path.join('share', package_name, 'launch'), glob(os.path.join('launch', '*launch.[pxy][yma]*'))),
+    ],
+    install_requires=['setuptools'],
+    zip_safe=True,
+    entry_points={'console_scripts': ['move_turtlebot = move_distance_ros2.move_turtlebot:main']},
+)
