@@ -14,7 +14,7 @@ from grader.launch.ros2_eval import Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed, not_installed
 from grader.launch.specs import MAX_NODES
 from grader.runtime.client_library import client_library, entry_point, import_roots
-from grader.runtime.spec import NodeSpec, file_arg
+from grader.runtime.spec import NodeSpec, Start, file_arg
 from grader.workspace import WorkspaceError
 from grader.workspace.model import Workspace
 
@@ -34,13 +34,22 @@ def _argv(process: dict[str, Any]) -> tuple[tuple[str, ...], tuple[tuple[str, by
     return tuple(args), tuple(files)
 
 
-def _timing(process: dict[str, Any]) -> str | None:
+def _start(process: dict[str, Any], started: dict[str, tuple[int, float]]) -> tuple[Start, str | None]:
+    """When the node starts in the run (``started``: the run's nodes so far by launch name, with their delay), and a
+    finding when the run cannot start it as launch would (after a process rosgrade does not run)."""
+    delay = float(process.get("delay") or 0.0)
     after = process.get("after")
-    if after:
-        return f"starts when {after.get('process', 'the launch')} {'exits' if after['event'] == 'exit' else 'starts'}"
-    if process.get("delay"):
-        return f"starts after {process['delay']:g} s (TimerAction)"
-    return None
+    if not after:
+        return Start(delay_s=delay, said=f"{delay:g} s after the start (TimerAction)" if delay else ""), None
+    trigger = after.get("process", "the launch")
+    verb = {"exit": "exits", "start": "starts"}.get(after["event"], "shuts down")
+    if trigger in started:
+        index, trigger_delay = started[trigger]  # named as launch names its processes: odom_subscriber-1
+        return Start(delay_s=max(0.0, round(delay - trigger_delay, 9)), after=index, on=after["event"],
+                     said=f"when {trigger} {verb}"), None
+    # After a process the run does not have (a ros2 command the grader carries out, a program not run): from
+    # launch's own time for that process.
+    return Start(delay_s=delay), f"starts when {trigger} {verb}; rosgrade starts it at {delay:g} s"
 
 
 def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
@@ -67,6 +76,7 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
     acts, act_findings, handled = launch_acts(result["processes"], file.name)
     findings += act_findings
     specs: list[NodeSpec] = []
+    started: dict[str, tuple[int, float]] = {}  # launch's name of each node the run starts -> (index, delay)
     for index, process in enumerate(result["processes"]):
         if index in handled:
             continue
@@ -86,16 +96,22 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
             executable = workspace.executable(process["package"], process["executable"])
         except WorkspaceError as exc:
             raise LaunchError(f"{file.name}: {exc}") from None
-        timing = _timing(process)
-        if timing:
-            findings.append(f"{file.name}: {label} {timing}; rosgrade starts it with the others, at the start.")
+        if (process.get("after") or {}).get("event") == "shutdown":
+            findings.append(f"{file.name}: {label} starts when launch shuts down (OnShutdown); rosgrade does not run "
+                            "it, as launch starts nothing once it is shutting down.")
+            continue
+        start, said = _start(process, started)
+        if said:
+            findings.append(f"{file.name}: {label} {said}.")
+        started[process["name"]] = (len(specs), float(process.get("delay") or 0.0))
         script = executable.script.resolve()
         flavour = client_library(script, workspace)
         argv, files = _argv(process)
         specs.append(NodeSpec(script=script, args=argv, stdin=stdin, flavour=flavour,
                               entry=entry_point(script, workspace), import_roots=import_roots(script, workspace,
                                                                                               flavour),
-                              files=files, output="screen" if process.get("output") == "screen" else "log"))
+                              files=files, output="screen" if process.get("output") == "screen" else "log",
+                              start=start))
     if len(specs) > MAX_NODES:
         raise LaunchError(f"{file.name} starts {len(specs)} nodes; a task runs at most {MAX_NODES}")
     if not specs:

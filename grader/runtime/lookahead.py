@@ -92,6 +92,8 @@ class Lookahead:
         bounds = [self.session.end_ns, *self.session.latched_connect_times(t)]
         if (call_ns := self.session.caller.next_ns()) is not None:  # the scenario's next service call
             bounds.append(max(call_ns, t + 1))
+        if (start_ns := session.starts.next_ns()) is not None:  # a node launch starts later
+            bounds.append(max(start_ns, t + 1))
         if self.session.shutdown_ns is not None and not self.session.shutdown_sent:
             bounds.append(self.session.shutdown_ns)
         bounds += [ready for pub in node.link.state.publishers.values()

@@ -34,6 +34,7 @@ from grader.runtime.process import NodeProcess, ProcessError
 from grader.runtime.scenario_participant import ParticipantError, ScenarioParticipant, plan
 from grader.runtime.services import Caller, ServiceRouter
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
+from grader.runtime.start_order import StartOrder, why_not_started
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from grader.runtime.wire import wire_for
 from sim import WORLD_NODE_NAMES, CommandSample, TurtlesimWorld, World, WorldTopic, open_world
@@ -135,6 +136,7 @@ class Session:
         self.shutdown_sent = False
         self.seq: dict[str, int] = {}
         self.nodes: list[_Node] = []
+        self.starts = StartOrder(spec.nodes, self.start_ns)  # when each node starts (launch's timers and handlers)
         self.received: dict[str, int] = {}  # command topic -> commands the robot received from nodes
         self.world_topics: set[tuple[str, str]] = set()  # (topic, type) the world publishes, as it publishes
         self.publications: dict[str, WorldTopic] = {}  # what the world declares it publishes, by topic
@@ -192,8 +194,7 @@ class Session:
                                               LOST_PREFIX)
             try:
                 with timing.stage("node start-up", absorb=True):
-                    for node in list(self.nodes):
-                        self._handshake(node)
+                    self._start_due(self.world.time_ns)
                 self._loop(wall0)
             finally:
                 with timing.stage("stopping nodes"):
@@ -202,6 +203,10 @@ class Session:
                             self._stop(node, "stopped_at_end",
                                        "still running when the scenario ended; stopped by the grader")
                         node.process.close()
+                    for index in self.starts.never_started(len(self.nodes)):
+                        outcome = self.nodes[index].outcome
+                        outcome.status = "not_started"
+                        outcome.message = why_not_started(self.spec.nodes[index].start, self.world.time_ns / 1e9)
                 for node_log in self._node_logs.values():
                     node_log.close()
             diagnostics = diagnose(self)
@@ -226,12 +231,20 @@ class Session:
         link = NodeLink(process.read_fd, process.write_fd, self.catalog, self.spec.limits.silent_wall_s,
                         self.spec.limits.output_bytes, RESERVED_NAMES, process.over_limit, USAGE_PERIOD_S,
                         process.queued_s)
+        # Every process starts with the run (it waits for START); a node runs from its start (StartOrder) on.
         self.nodes.append(_Node(node_spec, process, link,
-                                NodeOutcome(script=node_spec.script.name, findings=list(process.notes))))
+                                NodeOutcome(script=node_spec.script.name, findings=list(process.notes)), alive=False))
+
+    def _start_due(self, t: int) -> None:
+        """Start the nodes due at t (their START, then their first step), unless launch is shutting down."""
+        for index in self.starts.due(t):
+            self._handshake(self.nodes[index])
 
     def _handshake(self, node: _Node) -> None:
         link, node_spec = node.link, node.spec
         t = self.world.time_ns
+        node.alive = True
+        self.starts.started(self.nodes.index(node), t)
         try:
             link.handshake({"t_ns": t, "params": self._start_params(node_spec),
                             "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t),
@@ -261,6 +274,7 @@ class Session:
                 message = f"{message}; before any rospy call it printed: {said}"
         node.outcome.status, node.outcome.message = status, message
         self.services.node_ended(self.nodes.index(node), self.world.time_ns)
+        self.starts.exited(self.nodes.index(node), self.world.time_ns)
         if code is not None:
             node.outcome.exit_code = code if code >= 0 else None
             node.outcome.exit_signal = -code if code < 0 else None
@@ -320,6 +334,8 @@ class Session:
                 candidates += self.latched_connect_times(t)
                 if (call_ns := self.caller.next_ns()) is not None:
                     candidates.append(max(call_ns, t))
+                if (start_ns := self.starts.next_ns()) is not None:
+                    candidates.append(max(start_ns, t))
                 for node in alive:
                     term = node.term_ns if node.kill_ns is None else None  # SIGTERM already sent: next is SIGKILL
                     candidates += [c for c in (node.wake_ns, term, node.kill_ns) if c is not None]
@@ -340,6 +356,9 @@ class Session:
                 return
             self._decide_connections(alive, t_next)
             self.caller.tick(t_next)
+            if self.shutdown_ns is not None and t_next >= self.shutdown_ns:
+                self.starts.shut_down()  # launch starts nothing new once it is shutting down
+            self._start_due(t_next)
             shutdown = None
             if self.shutdown_ns is not None and not self.shutdown_sent and t_next >= self.shutdown_ns and alive:
                 self.shutdown_sent = True

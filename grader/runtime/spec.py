@@ -19,6 +19,7 @@ NodeStatus = Literal[
     "crashed",            # died from a signal it did not ask for (segfault, abort)
     "killed_by_limit",    # exceeded a CPU, memory, process, file-size or output limit
     "protocol_violation",  # sent something that is not a valid frame
+    "not_started",        # launch would start it later (a TimerAction, an event handler) and the run ended first
 ]
 
 
@@ -51,6 +52,21 @@ def file_arg(name: str) -> str:
 
 
 @dataclass(frozen=True)
+class Start:
+    """When a node starts, as `ros2 launch` starts it: with the run, ``delay_s`` after it (a TimerAction), or when the
+    run's node ``after`` (its index) starts or exits (an OnProcessStart / OnProcessExit handler), plus ``delay_s``."""
+
+    delay_s: float = 0.0
+    after: int | None = None
+    on: Literal["start", "exit"] = "exit"
+    said: str = ""  # how the launch file says it, for the report ("when move_square.py exits")
+
+    def __post_init__(self) -> None:
+        if not self.delay_s >= 0:
+            raise ValueError(f"a node's start delay must not be negative (got {self.delay_s!r})")
+
+
+@dataclass(frozen=True)
 class NodeSpec:
     """One node to run: a script, its arguments (remaps included, e.g. ``cmd_vel:=/x``), stdin and namespace."""
 
@@ -65,6 +81,8 @@ class NodeSpec:
     output: Literal["screen", "log"] = "screen"
     # Which client library the script imports (rospy: "ros1", rclpy: "ros2"): its import root and wire format.
     flavour: Literal["ros1", "ros2"] = "ros1"
+    # When it starts (launch's TimerAction and event handlers); by default with the run.
+    start: Start = Start()
     # A node the grader provides (a server the student's client calls, teleop): confined like the student's, but
     # its traffic and findings are not the student's to act on.
     provided: bool = False
@@ -102,6 +120,12 @@ class RunSpec:
     shutdown_grace_s: float = 5.0
     # The submission's own .msg/.srv/.action types: the run's catalog and what its nodes import (None: none).
     interfaces: InterfaceSet | None = None
+
+    def __post_init__(self) -> None:
+        for index, node in enumerate(self.nodes):
+            after = node.start.after
+            if after is not None and not (0 <= after < len(self.nodes) and after != index):
+                raise ValueError(f"node {index} starts after node {after}, which is not another node of the run")
 
     @property
     def flavour(self) -> str:
@@ -146,7 +170,7 @@ class RunResult:
     def status(self) -> str:
         """The worst node status, for one-word summaries."""
         order = ["protocol_violation", "killed_by_limit", "crashed", "timeout", "killed_after_shutdown",
-                 "stopped_at_end", "exited"]
+                 "stopped_at_end", "exited", "not_started"]
         statuses = [n.status for n in self.nodes] or ["exited"]
         return min(statuses, key=order.index)
 
