@@ -26,7 +26,11 @@ class LidarDistance(Node):
 
 def main():
     rclpy.init()
-    rclpy.spin(LidarDistance())
+    node = LidarDistance()
+    try:
+        rclpy.spin(node)
+    except KeyboardInterrupt:
+        pass
 
 
 if __name__ == "__main__":
