@@ -220,6 +220,9 @@ class Scenario(_Model):
                                                description="action goals the grader sends (ROS 2, or actionlib's for rospy), in time order")
     publications: list[PublicationSpec] = Field(
         default_factory=list, description="messages the grader publishes (rostopic pub / ros2 topic pub), in time order")
+    world_params: dict[str, JsonValue] = Field(
+        default_factory=dict, description="parameters the world's node starts with, by name, as a launch file's "
+        "parameters for turtlesim_node give them (e.g. {background_r = 255}); a name it does not declare is ignored")
     command_types: list[str] | None = Field(
         None, description="velocity command types the robot's base takes, e.g. ['geometry_msgs/Twist', "
         "'geometry_msgs/TwistStamped']; None: what the robot takes from the run's client library (turtlesim: "

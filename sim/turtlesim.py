@@ -275,6 +275,9 @@ class TurtlesimWorld(ScenarioTimes):
     def use_parameters(self, params: Parameters) -> None:
         """Start on the run's parameter server as turtle_frame.cpp's constructor does: each background parameter
         not set yet gets its default, then the canvas is filled with the colour they give."""
+        for name, value in self.scenario.world_params.items():  # the node's own parameters, from its launch
+            if self.flavour != ROS2 or name in turtlesim_params.DECLARED:  # Jazzy ignores overrides it never declares
+                params.set(f"{NODE_NAME}/{name}", value)
         for name, default in zip(BACKGROUND_PARAMS, DEFAULT_BACKGROUND):
             if not params.has(name):
                 params.set(name, default)

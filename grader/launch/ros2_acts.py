@@ -11,6 +11,7 @@ from typing import Any
 import yaml
 from pydantic import ValidationError
 
+from grader.nodelib.common.rosgrade_param_files import ParamFileError, ParamSet
 from sim.scenario import ActionGoalSpec, ParamSetSpec, PublicationSpec, Scenario, ServiceCallSpec
 
 _TOPIC_PUB_FLAGS = {"-r": "rate", "--rate": "rate", "-t": "times", "--times": "times"}
@@ -31,6 +32,8 @@ class LaunchActs:
     param_sets: list[ParamSetSpec] = field(default_factory=list)
     publications: list[PublicationSpec] = field(default_factory=list)
     action_goals: list[ActionGoalSpec] = field(default_factory=list)
+    # The parameters the launch file starts the world's node with (turtlesim_node's `parameters=`), by name.
+    world_params: dict[str, Any] = field(default_factory=dict)
 
     def add(self, act: Any) -> None:
         kind = {ServiceCallSpec: self.service_calls, ParamSetSpec: self.param_sets,
@@ -38,7 +41,8 @@ class LaunchActs:
         kind.append(act)
 
     def __bool__(self) -> bool:
-        return bool(self.service_calls or self.param_sets or self.publications or self.action_goals)
+        return bool(self.service_calls or self.param_sets or self.publications or self.action_goals
+                    or self.world_params)
 
 
 def _words(process: dict[str, Any]) -> list[str]:
@@ -125,6 +129,12 @@ def launch_acts(processes: list[dict[str, Any]], file_name: str) -> tuple[Launch
     findings: list[str] = []
     handled: set[int] = set()
     for index, process in enumerate(processes):
+        if process.get("world"):
+            try:
+                acts.world_params.update(world_params(process))
+            except ParamFileError as exc:
+                findings.append(f"{file_name} gives {process['executable']} parameters rcl refuses: {exc.problem}.")
+            continue
         if process["kind"] != "process":
             continue
         command = " ".join(process["cmd"])
@@ -147,10 +157,32 @@ def launch_acts(processes: list[dict[str, Any]], file_name: str) -> tuple[Launch
     return acts, findings, handled
 
 
+def world_params(process: dict[str, Any]) -> dict[str, Any]:
+    """The parameters a world node (turtlesim_node) gets from its launch description, as rcl reads its command line:
+    each --params-file (launch_ros's, by content) and -p, in order, for the node's full name."""
+    overrides = ParamSet()
+    contents = iter(process.get("params_files", []))
+    args = process.get("args", [])
+    for flag, value in zip(args, args[1:]):
+        if flag == "--params-file":
+            overrides.read_text(str(next(contents)["content"]))
+        elif flag in ("-p", "--param"):
+            name, _, text = value.partition(":=")
+            node, _, name = name.rpartition(":")
+            overrides.set_value(node or "/**", name, text)
+    namespace = process.get("namespace") or ""
+    full_name = f"{namespace.rstrip('/')}/{process.get('node_name') or process['executable']}"
+    return {name: value for name, value in overrides.for_node(full_name).items() if value is not None}
+
+
 def with_acts(scenario: Scenario, acts: LaunchActs) -> Scenario:
-    """The scenario with the launch file's acts added to its own, each list in time order."""
+    """The scenario with the launch file's acts added to its own, each list in time order, and the world's node
+    started with the launch file's parameters for it."""
     if not acts:
         return scenario
-    update = {name: sorted([*getattr(scenario, name), *getattr(acts, name)], key=lambda act: act.t)
-              for name in ("service_calls", "param_sets", "publications", "action_goals") if getattr(acts, name)}
+    update: dict[str, Any] = {
+        name: sorted([*getattr(scenario, name), *getattr(acts, name)], key=lambda act: act.t)
+        for name in ("service_calls", "param_sets", "publications", "action_goals") if getattr(acts, name)}
+    if acts.world_params:
+        update["world_params"] = {**scenario.world_params, **acts.world_params}
     return scenario.model_copy(update=update)
