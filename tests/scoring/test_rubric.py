@@ -78,7 +78,9 @@ def test_every_shipped_rubric_loads_with_the_contracted_ids() -> None:
     assert {k: [c.id for c in r.criteria] for k, r in rubrics.items()} == CONTRACT
     for r in rubrics.values():
         assert r.max_score == sum(c.points for c in r.criteria) > 0
-        assert r.nodes[0].script.endswith(".py") if r.launch is None else r.launch.file.endswith(".launch")
+        assert r.nodes or r.launch is not None
+        assert all(node.script.endswith(".py") for node in r.nodes)
+        assert r.launch is None or r.launch.file.endswith((".launch", ".launch.py", ".launch.xml", ".launch.yaml"))
 
 
 def test_robot_profiles_and_seed_specifics() -> None:
