@@ -226,8 +226,9 @@ def _ros2_launch_nodes(folder: Path, file: Path, rubric: Rubric) -> tuple[Starte
     the grader's acts (LaunchError if it cannot be read)."""
     workspace = read_workspace(folder)
     nodes, findings, acts = ros2_node_specs(file, workspace, rubric.launch.args, rubric.launch.stdin)
-    scripts = list(dict.fromkeys(spec.script for spec in nodes))
-    for spec in {spec.script: spec for spec in nodes}.values():
+    own = [spec for spec in nodes if not spec.provided]  # the grader's turtlesim nodes are not the student's files
+    scripts = list(dict.fromkeys(spec.script for spec in own))
+    for spec in {spec.script: spec for spec in own}.values():
         findings += check_script(spec.script, rosrun=spec.flavour == ROS1)
         if spec.flavour == ROS2:
             findings += package_findings(spec.script, spec.entry, workspace)
