@@ -117,6 +117,11 @@ class ServiceReply:
 
 
 @dataclass(frozen=True)
+class GraphQuery:
+    """The node asks what of the run's graph it sees now (GRAPH); the sink returns the GRAPH_VIEW payload."""
+
+
+@dataclass(frozen=True)
 class ParamChange:
     """A node set (``value``) or deleted (``value`` None) the parameter ``name`` (absolute) on the run's server."""
 
@@ -275,12 +280,13 @@ class NodeLink:
         self._send(ch.encode_json(ch.START, start))
         return hello.model_dump()
 
-    def run_until_wait(self, t_ns: int, sink: Callable[[object], ServiceReply | None],
+    def run_until_wait(self, t_ns: int, sink: Callable[[object], ServiceReply | bytes | None],
                        inert: dict[int, bool] | None = None, at_moment: Callable[[int], int] | None = None,
                        on_act: Callable[[], None] | None = None) -> int | None:
         """Read frames until the node yields, passing each event at t_ns to sink; returns wake_ns or None.
 
-        A probe ServiceCall is answered at once with the ServiceReply the sink returns for it (the node waits).
+        A probe ServiceCall is answered at once with the ServiceReply the sink returns for it (the node waits), a
+        GraphQuery with the GRAPH_VIEW payload it returns.
         After a BATCH of moments (``inert``: its inert publishers, see rosgrade_channel.encode_batch) the node names
         each moment it sends something at (MOMENT) before that: ``at_moment`` gets its time and returns it, and what
         follows happens then. Its first frame that is not inert goes to ``on_act`` before it is handled, and ends
@@ -320,6 +326,8 @@ class NodeLink:
                     answer = sink(item)
                     if isinstance(item, ServiceCall) and item.probe:
                         self._reply(answer)
+                    elif isinstance(item, GraphQuery):
+                        self._send(ch.encode(ch.GRAPH_VIEW, answer))
 
     def _inert(self, kind: int, payload: bytes, inert: dict[int, bool]) -> bool:
         """Whether a frame leaves the world and the node's batches as they are (the node library's own rule)."""
@@ -362,6 +370,10 @@ class NodeLink:
         if kind == ch.CALL:
             header, request = ch.split_header_bytes(payload)
             return self._call(self._parse(kind, header), request)
+        if kind == ch.GRAPH:
+            if payload:
+                raise ProtocolViolation(f"GRAPH carries {len(payload)} bytes; it asks with none")
+            return GraphQuery()
         if kind == ch.RESPOND:
             header, response = ch.split_header_bytes(payload)
             return self._respond(self._parse(kind, header), response)

@@ -26,8 +26,9 @@ from grader.runtime import confine
 from grader.runtime.cpu_claim import one_cpu
 from grader.runtime.lookahead import Lookahead, Pace, Speculation
 from grader.runtime.diagnostics import diagnose, topic_summary
-from grader.runtime.node_link import (ROBOT, Endpoint, EndpointLimitExceeded, Latched, LogLine, NodeExited, NodeLink,
-                                      NodeOverLimit, NodeSilent, OutputLine, ParamChange, ProtocolViolation,
+from grader.runtime.graph import for_session as graph_view
+from grader.runtime.node_link import (ROBOT, Endpoint, EndpointLimitExceeded, GraphQuery, Latched, LogLine, NodeExited,
+                                      NodeLink, NodeOverLimit, NodeSilent, OutputLine, ParamChange, ProtocolViolation,
                                       Publication, ServiceAnswer, ServiceCall, ServiceOffer, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
@@ -192,6 +193,7 @@ class Session:
                                           self._world_sample, self._take_declarations)
             self.caller = ScenarioParticipant(self._plan, self.start_ns, self.services, self.params, self, rec.write,
                                               LOST_PREFIX)
+            self.graph = graph_view(self, self._plan)  # what GRAPH answers (grader/runtime/graph.py)
             try:
                 with timing.stage("node start-up", absorb=True):
                     self._start_due(self.world.time_ns)
@@ -443,11 +445,13 @@ class Session:
         return not self.discovery_ns or (init is not None and t >= init + self.discovery_ns)
 
     # -- what nodes do -----------------------------------------------------------------------------------------
-    def _node_event(self, node: _Node, event: object, t: int) -> ServiceReply | None:
+    def _node_event(self, node: _Node, event: object, t: int) -> ServiceReply | bytes | None:
         if isinstance(event, Publication):
             self._publication(node, event.endpoint, event.data, t)
             return None
         index = self.nodes.index(node)
+        if isinstance(event, GraphQuery):
+            return self.graph.answer(index, t)
         if isinstance(event, ServiceCall):
             return self.services.call(Caller(node.callerid, "node", index, event.ident, event.seq), event, t)
         if isinstance(event, ServiceOffer):

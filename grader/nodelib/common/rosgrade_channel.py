@@ -10,7 +10,7 @@ import os
 import re
 import struct
 
-PROTOCOL = 8
+PROTOCOL = 9
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000
@@ -40,10 +40,12 @@ PARAM = 12
 MOMENT = 13
 SERVE = 14
 RESPOND = 15
+GRAPH = 16  # what of the run's graph the node sees now: answered at once with a GRAPH_VIEW
 # grader -> node
 START = 32
 BATCH = 33
 REPLY = 34
+GRAPH_VIEW = 35  # JSON {"nodes": [{"name", "kind", "pub", "sub", "srv"}, ...]}: the other nodes it has discovered
 
 # PARAM operations: a node set or deleted a parameter of the run's one parameter server.
 PARAM_SET = "set"
@@ -62,12 +64,12 @@ SERVICE_REQUEST = "request"
 KIND_NAMES = {
     HELLO: "HELLO", INIT: "INIT", ADVERTISE: "ADVERTISE", SUBSCRIBE: "SUBSCRIBE", UNREGISTER: "UNREGISTER",
     PUBLISH: "PUBLISH", LOG: "LOG", OUTPUT: "OUTPUT", EXCEPTION: "EXCEPTION", WAIT: "WAIT", CALL: "CALL",
-    PARAM: "PARAM", MOMENT: "MOMENT", SERVE: "SERVE", RESPOND: "RESPOND",
-    START: "START", BATCH: "BATCH", REPLY: "REPLY",
+    PARAM: "PARAM", MOMENT: "MOMENT", SERVE: "SERVE", RESPOND: "RESPOND", GRAPH: "GRAPH",
+    START: "START", BATCH: "BATCH", REPLY: "REPLY", GRAPH_VIEW: "GRAPH_VIEW",
 }
 NODE_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, PUBLISH, LOG, OUTPUT, EXCEPTION, WAIT, CALL,
-                        PARAM, MOMENT, SERVE, RESPOND})
-GRADER_KINDS = frozenset({START, BATCH, REPLY})
+                        PARAM, MOMENT, SERVE, RESPOND, GRAPH})
+GRADER_KINDS = frozenset({START, BATCH, REPLY, GRAPH_VIEW})
 JSON_KINDS = frozenset({HELLO, INIT, ADVERTISE, SUBSCRIBE, UNREGISTER, LOG, EXCEPTION, WAIT, START, PARAM, SERVE})
 
 _HEADER = struct.Struct("<IB")

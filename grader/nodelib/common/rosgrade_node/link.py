@@ -115,6 +115,15 @@ class Link:
         except (ch.ChannelError, OSError) as exc:
             _fail(exc)
 
+    def graph(self) -> dict:
+        """Send GRAPH and read its GRAPH_VIEW: the other nodes of the run the node has discovered, with their
+        publishers, subscribers and services (the grader answers at once, as it answers a probe CALL)."""
+        self.send(ch.encode(ch.GRAPH))
+        try:
+            return ch.decode_json(self._read(ch.GRAPH_VIEW), limit=ch.MAX_FRAME_BYTES)
+        except (ch.ChannelError, OSError) as exc:
+            _fail(exc)
+
     def read_json(self, kind: int) -> dict:
         """Read one frame that must be of ``kind`` and carry JSON."""
         try:

@@ -1,11 +1,13 @@
 """The rest of rospy's graph API: published topics, cached parameters, remap_name and SubscribeListener.
 
 rosgrade has no master: the topics published are what the world declared at START (plus /clock and /rosout, which
-Gazebo and every node publish) and this node's own publishers.
+Gazebo and every node publish), this node's own publishers and the run's other nodes' (the grader's graph view, which
+knows a registration at once, as the master does).
 """
 from __future__ import annotations
 
 from rosgrade_node import runtime
+from rosgrade_node.graph_view import other_nodes
 
 from . import names, params, topics
 
@@ -18,6 +20,7 @@ def get_published_topics(namespace="/"):
     found.update((topic, type_name) for topic, type_name in runtime.world_topics)
     found.update((reg.resolved_name, reg.data_class._type) for reg in list(topics._open.values())
                  if reg.reg_type == "pub")
+    found.update((topic, type_name) for node in other_nodes() for topic, type_name in node["pub"])
     prefix = namespace if namespace.endswith("/") else namespace + "/"
     return [[topic, type_name] for topic, type_name in sorted(found.items())
             if namespace == "/" or topic.startswith(prefix) or topic == namespace]

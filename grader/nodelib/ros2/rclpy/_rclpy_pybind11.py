@@ -1,5 +1,5 @@
 """The names rclpy's C extension exports that student code meets: RCLError (tracebacks show this class path),
-InvalidHandle and SignalHandlerOptions."""
+NodeNameNonExistentError, InvalidHandle and SignalHandlerOptions."""
 from __future__ import annotations
 
 from enum import IntEnum
@@ -7,6 +7,10 @@ from enum import IntEnum
 
 class RCLError(RuntimeError):
     """An rcl call failed (raised by real rclpy's pybind11 extension with rcl's error text)."""
+
+
+class NodeNameNonExistentError(RCLError):
+    """A graph query by node named a node the graph does not hold."""
 
 
 class InvalidHandle(Exception):

@@ -7,7 +7,8 @@ import weakref
 from rosgrade_node import runtime
 
 from . import _graph, _runtime, names, signals
-from ._rclpy_pybind11 import (CONTEXT_INVALID, DESTROYED, ROSOUT_FINI_FAILED, InvalidHandle, RCLError,
+from ._rclpy_pybind11 import (CONTEXT_INVALID, DESTROYED, ROSOUT_FINI_FAILED, InvalidHandle, NodeNameNonExistentError,
+                              RCLError,
                               SignalHandlerOptions)
 from .callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from .client import Client
@@ -30,13 +31,7 @@ from .utilities import get_default_context
 
 PARAMETER_SEPARATOR_STRING = "."
 # The world publishes these always; a node's graph view lists them beside its own endpoints.
-_ALWAYS_TOPICS = (("/parameter_events", "rcl_interfaces/msg/ParameterEvent"), ("/rosout", "rcl_interfaces/msg/Log"))
-
-
-def _ros2_type(name: str) -> str:
-    """'nav_msgs/Odometry' -> 'nav_msgs/msg/Odometry' (the grader may name world types either way)."""
-    pkg, sep, rest = name.partition("/")
-    return name if not sep or "/" in rest else f"{pkg}/msg/{rest}"
+_ALWAYS_TOPICS = _graph.NODE_PUBLISHERS
 
 
 class Node:
@@ -411,45 +406,92 @@ class Node:
         self._wake_executor()
 
     # -- graph ------------------------------------------------------------------------------------------------------
+    # This process's endpoints it knows itself; the run's other nodes (the world's and /rosgrade included) come from
+    # the grader at the node's sim time, once DDS discovery has made them visible (rclpy/_graph.py).
     def get_topic_names_and_types(self, no_demangle: bool = False) -> list[tuple[str, list[str]]]:
-        """This process's endpoints, the world's topics and the ones every ROS 2 graph has."""
+        """Every topic on the graph the node sees, with its types, sorted by name."""
         self.handle
-        topics: dict[str, set[str]] = {}
-        for topic, type_name in _ALWAYS_TOPICS:
-            topics.setdefault(topic, set()).add(type_name)
-        for _kind, topic, type_name in _graph.endpoints.values():
-            topics.setdefault(topic, set()).add(type_name)
-        for topic, type_name in runtime.world_topics:
-            topics.setdefault(topic, set()).add(_ros2_type(type_name))
-        return [(topic, sorted(types)) for topic, types in sorted(topics.items())]
+        pairs = [*_ALWAYS_TOPICS, *((topic, t) for _k, topic, t in _graph.endpoints.values()),
+                 *((topic, _graph.interface_type(t)) for topic, t in runtime.world_topics)]
+        for node in _graph.others():
+            pairs += node["pub"] + node["sub"]
+        return _graph.names_and_types(pairs)
 
     def get_service_names_and_types(self) -> list[tuple[str, list[str]]]:
-        """This node's services, its parameter services included, sorted by name as rcl gives them (the services of
-        the run's other nodes are not known to a node here). COM2009's number_game.py logs the first one's name."""
+        """Every service on the graph the node sees (parameter services included), sorted by name as rcl gives them.
+        COM2009's number_game.py logs the first one's name."""
         self.handle
-        services: dict[str, set[str]] = {}
-        for service in self._services:
-            services.setdefault(service.srv_name, set()).add(_graph.type_of(service.srv_type)[0])
-        return [(name, sorted(types)) for name, types in sorted(services.items())]
+        pairs = [(service.srv_name, _graph.type_of(service.srv_type)[0]) for service in self._services]
+        return _graph.names_and_types(pairs + [srv for node in _graph.others() for srv in node["srv"]])
 
     def get_node_names(self) -> list[str]:
-        return [self._name]
+        return [name for name, _ in self.get_node_names_and_namespaces()]
+
+    def _local_nodes(self) -> list[Node]:
+        """The live nodes of this node's context (its DDS participant), which the grader sees as one process."""
+        return [node for node in (ref() for ref in self._context._nodes) if node is not None and not node._destroyed]
 
     def get_node_names_and_namespaces(self) -> list[tuple[str, str]]:
-        return [(self._name, self._namespace)]
+        """This process's nodes and the others it has discovered (a DDS discovery's order is not ROS's: sorted)."""
+        self.handle
+        mine = [(node._name, node._namespace) for node in self._local_nodes()]
+        return mine + sorted(_graph.split_node_name(n["name"]) for n in _graph.others())
 
     def get_fully_qualified_node_names(self) -> list[str]:
-        return [self.get_fully_qualified_name()]
-
-    def _count(self, topic_name: str, kind: str) -> int:
-        """Endpoints of ``kind`` on the topic: this process's own, plus the ones the grader has matched with them."""
         self.handle
-        fq = names.expand_topic_name(topic_name, self._name, self._namespace)
-        names.validate_full_topic_name(fq)
-        own = [h for h, (k, topic, _) in _graph.endpoints.items() if topic == fq and k == kind]
-        others = [h for h, (k, topic, _) in _graph.endpoints.items() if topic == fq and k != kind]
-        matched = max((_graph.connections(h) for h in others), default=0)
-        return len(own) + matched
+        mine = [node.get_fully_qualified_name() for node in self._local_nodes()]
+        return mine + sorted(node["name"] for node in _graph.others())
+
+    def _own(self, kind: str) -> list[tuple[str, str]]:
+        """This node's (name, type) of ``kind``, the endpoints rclpy makes for it included (rcl lists them too)."""
+        builtin = self._builtin_topics()
+        if kind == "pub":
+            return [*(pair for pair in builtin if pair[0] != "/clock"),
+                    *((p.topic_name, _graph.type_of(p.msg_type)[0]) for p in self._publishers)]
+        if kind == "sub":
+            return [*(pair for pair in builtin if pair[0] == "/clock"),
+                    *((s.topic_name, _graph.type_of(s.msg_type)[0]) for s in self._subscriptions)]
+        entities = self._services if kind == "srv" else self._clients
+        return [(e.srv_name, _graph.type_of(e.srv_type)[0]) for e in entities]
+
+    def _endpoints_of(self, node_name: str, node_namespace: str, kind: str) -> list[tuple[str, list[str]]]:
+        """A node's endpoints of ``kind`` ("pub", "sub", "srv", "cli"); an unknown node is rcl's error."""
+        self.handle
+        fq = node_namespace.rstrip("/") + "/" + node_name
+        for node in self._local_nodes():
+            if node.get_fully_qualified_name() == fq:
+                return _graph.names_and_types(node._own(kind))
+        for node in _graph.others():
+            if node["name"] == fq:
+                return _graph.names_and_types(node[kind])
+        what = {"pub": "publisher", "sub": "subscriber", "srv": "service", "cli": "client"}[kind]
+        raise NodeNameNonExistentError(f"cannot get {what} names and types for nonexistent node: error not set")
+
+    def get_publisher_names_and_types_by_node(self, node_name: str, node_namespace: str,
+                                              no_demangle: bool = False) -> list[tuple[str, list[str]]]:
+        return self._endpoints_of(node_name, node_namespace, "pub")
+
+    def get_subscriber_names_and_types_by_node(self, node_name: str, node_namespace: str,
+                                               no_demangle: bool = False) -> list[tuple[str, list[str]]]:
+        return self._endpoints_of(node_name, node_namespace, "sub")
+
+    def get_service_names_and_types_by_node(self, node_name: str, node_namespace: str) -> list[tuple[str, list[str]]]:
+        return self._endpoints_of(node_name, node_namespace, "srv")
+
+    def get_client_names_and_types_by_node(self, node_name: str, node_namespace: str) -> list[tuple[str, list[str]]]:
+        """A node's clients: this node's own; the grader does not know other nodes' clients until they call."""
+        return self._endpoints_of(node_name, node_namespace, "cli")
+
+    def _count(self, name: str, kind: str) -> int:
+        """Endpoints of ``kind`` on the topic or service: this process's nodes' own and the other nodes' it sees."""
+        self.handle
+        if kind in ("pub", "sub"):
+            fq = names.expand_topic_name(name, self._name, self._namespace)
+            names.validate_full_topic_name(fq)
+        else:
+            fq = self.resolve_service_name(name)
+        return sum(1 for node in [*(n._own(kind) for n in self._local_nodes()), *(o[kind] for o in _graph.others())]
+                   for endpoint, _ in node if endpoint == fq)
 
     def count_publishers(self, topic_name: str) -> int:
         return self._count(topic_name, "pub")
@@ -458,10 +500,10 @@ class Node:
         return self._count(topic_name, "sub")
 
     def count_clients(self, service_name: str) -> int:
-        return sum(1 for c in self._clients if c.srv_name == self.resolve_service_name(service_name))
+        return self._count(service_name, "cli")
 
     def count_services(self, service_name: str) -> int:
-        return sum(1 for s in self._services if s.srv_name == self.resolve_service_name(service_name))
+        return self._count(service_name, "srv")
 
     # -- parameters -------------------------------------------------------------------------------------------------
     def declare_parameter(self, name: str, value=None, descriptor: ParameterDescriptor | None = None,
