@@ -1,11 +1,14 @@
 """The runtime's node specs for what a ROS 2 launch file starts: each node of the submission with the argv launch_ros
-builds for it and its parameter files handed over by content; turtlesim_node is the world, and what rosgrade does
-not run (external packages, other programs, delays) is said in a finding."""
+builds for it and its parameter files handed over by content; turtlesim_node is the world (bridged to when launched in
+a namespace), turtlesim's turtle_teleop_key and mimic run as the grader's shipped nodes, and what rosgrade does not run
+(external packages, other programs, delays) is said in a finding."""
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
+from grader.launch import ros2_turtlesim
 from grader.launch.model import LaunchError
 from grader.launch.ros2_acts import LaunchActs, launch_acts
 from grader.launch.ros2_cli import external_include_notes
@@ -13,7 +16,9 @@ from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_eval import Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed, not_installed
 from grader.launch.specs import MAX_NODES
-from grader.runtime.client_library import client_library, entry_point, import_roots
+from grader.provided_nodes import companions, launched_script, provided_spec
+from grader.rubric import GRADER_NODES
+from grader.runtime.client_library import ROS2, client_library, entry_point, import_roots
 from grader.runtime.spec import NodeSpec, Start, file_arg
 from grader.workspace import WorkspaceError
 from grader.workspace.model import Workspace
@@ -52,6 +57,14 @@ def _start(process: dict[str, Any], started: dict[str, tuple[int, float]]) -> tu
     return Start(delay_s=delay), f"starts when {trigger} {verb}; rosgrade starts it at {delay:g} s"
 
 
+def _student_script(process: dict[str, Any], workspace: Workspace, file: Path) -> Path:
+    """The script of the submission's executable the node runs; LaunchError when the package does not have it."""
+    try:
+        return workspace.executable(process["package"], process["executable"]).script.resolve()
+    except WorkspaceError as exc:
+        raise LaunchError(f"{file.name}: {exc}") from None
+
+
 def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
                     stdin: str | None) -> tuple[tuple[NodeSpec, ...], list[str], LaunchActs]:
     """The nodes `ros2 launch` would start from `file`, as node specs, with findings and what the grader carries out
@@ -75,10 +88,12 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
                 "value is needed." for name, value in args.items() if name not in declared]
     acts, act_findings, handled = launch_acts(result["processes"], file.name)
     findings += act_findings
+    turtlesim = ros2_turtlesim.world(result["processes"], file.name)
+    findings += ros2_turtlesim.finding(turtlesim, file.name)
     specs: list[NodeSpec] = []
     started: dict[str, tuple[int, float]] = {}  # launch's name of each node the run starts -> (index, delay)
     for index, process in enumerate(result["processes"]):
-        if index in handled:
+        if index in handled or ros2_turtlesim.is_world(process):
             continue
         if process["kind"] != "node":
             findings.append(f"{file.name} starts `{' '.join(process['cmd'])}`: rosgrade runs the nodes of a launch "
@@ -86,16 +101,12 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
                             "`ros2 action send_goal` commands, but no other program; it was not run.")
             continue
         label = f"{process['package']} {process['executable']}"
-        if process.get("world") and process["executable"] == "turtlesim_node":
-            continue
-        if process.get("world") or process.get("external"):
+        shipped = launched_script(process["package"], process["executable"], ROS2)
+        if shipped is None and (process.get("world") or process.get("external")):
             findings.append(f"{file.name} starts {label}, which rosgrade does not run (not part of the graded "
                             "simulation).")
             continue
-        try:
-            executable = workspace.executable(process["package"], process["executable"])
-        except WorkspaceError as exc:
-            raise LaunchError(f"{file.name}: {exc}") from None
+        script = GRADER_NODES / shipped if shipped is not None else _student_script(process, workspace, file)
         if (process.get("after") or {}).get("event") == "shutdown":
             findings.append(f"{file.name}: {label} starts when launch shuts down (OnShutdown); rosgrade does not run "
                             "it, as launch starts nothing once it is shutting down.")
@@ -104,14 +115,19 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
         if said:
             findings.append(f"{file.name}: {label} {said}.")
         started[process["name"]] = (len(specs), float(process.get("delay") or 0.0))
-        script = executable.script.resolve()
-        flavour = client_library(script, workspace)
         argv, files = _argv(process)
+        argv = tuple(ros2_turtlesim.bridged(list(argv), process, turtlesim))
+        output = "screen" if process.get("output") == "screen" else "log"
+        if shipped is not None:
+            specs.append(replace(provided_spec(shipped, workspace, argv), stdin=stdin, files=files, output=output,
+                                 start=start))
+            continue
+        flavour = client_library(script, workspace)
         specs.append(NodeSpec(script=script, args=argv, stdin=stdin, flavour=flavour,
                               entry=entry_point(script, workspace), import_roots=import_roots(script, workspace,
                                                                                               flavour),
-                              files=files, output="screen" if process.get("output") == "screen" else "log",
-                              start=start))
+                              files=files, output=output, start=start))
+    specs += [provided_spec(script, workspace) for script in companions([s.script.name for s in specs if s.provided])]
     if len(specs) > MAX_NODES:
         raise LaunchError(f"{file.name} starts {len(specs)} nodes; a task runs at most {MAX_NODES}")
     if not specs:

@@ -1,0 +1,120 @@
+"""turtlesim in a ROS 2 launch file: ``turtlesim_node`` is rosgrade's one turtlesim world, whose names are those the
+node has in the root namespace (``/turtle1/cmd_vel``, ``/spawn``, ``/turtle1/rotate_absolute``...).
+
+When the launch file starts it in a namespace (``Node(package='turtlesim', namespace='turtlesim1', ...)``) or remaps
+its names, every other node gets remap rules that bridge the two, as the ROS 1 launch path does
+(``grader.launch.turtlesim``): the name the launched turtlesim would use (``/turtlesim1/turtle1/cmd_vel``) leads to the
+world's, and the world's own name, which nothing would serve under ``ros2 launch``, to an unserved one, so a node in
+another namespace reaches no turtle. rcl applies the first rule that matches a name, so a node's own rule whose target
+is one of these names is rewritten to where the bridge leads. One world serves one turtlesim_node: a launch file that
+starts two (the launch tutorial's turtlesim_mimic_launch.py) is refused with what to change.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from grader.launch import names
+from grader.launch.model import LaunchError
+from grader.launch.turtlesim import PACKAGE, UNSERVED, WORLD_NAMES, WORLD_NODE
+
+ACTION = "turtle1/rotate_absolute"  # Jazzy's turtle1 action; rosgrade's nodes remap its five parts one by one
+ACTION_PARTS = ("_action/send_goal", "_action/cancel_goal", "_action/get_result", "_action/feedback",
+                "_action/status")
+ROS2_WORLD_NAMES = (*WORLD_NAMES, *(f"{ACTION}/{part}" for part in ACTION_PARTS))
+_REMAP_FLAGS = ("-r", "--remap")
+
+
+@dataclass(frozen=True)
+class Ros2Turtlesim:
+    """The launch file's turtlesim_node (its process) and the names it would use that differ from the world's."""
+
+    process: dict[str, Any]
+    launched: dict[str, str]  # world name (/turtle1/cmd_vel) -> the launched node's (/turtlesim1/turtle1/cmd_vel)
+
+
+def is_world(process: dict[str, Any]) -> bool:
+    """Whether the process is turtlesim's turtlesim_node (the world, not a process rosgrade starts)."""
+    return process.get("kind") == "node" and process.get("package") == PACKAGE and process.get("executable") == WORLD_NODE
+
+
+def _identity(process: dict[str, Any]) -> tuple[str, str]:
+    """The node's name and namespace as launch starts it (the executable's own node name when launch gives none)."""
+    namespace = names.canonical(process.get("namespace") or "") or "/"
+    return process.get("node_name") or process["executable"], namespace if namespace.startswith("/") else "/" + namespace
+
+
+def _full_name(process: dict[str, Any]) -> str:
+    node_name, namespace = _identity(process)
+    return f"{namespace.rstrip('/')}/{node_name}"
+
+
+def expand(name: str, node_name: str, namespace: str) -> str:
+    """``name`` as rcl expands it for a node: global, private (``~``) or relative to the node's namespace."""
+    if name.startswith("~"):
+        return names.canonical(f"{namespace.rstrip('/')}/{node_name}/{name[1:]}")
+    return names.canonical(name if name.startswith("/") else f"{namespace.rstrip('/')}/{name}")
+
+
+def _rules(args: list[str]) -> list[tuple[int, str, str]]:
+    """The node's name remap rules in its argv: (index of the rule's word, from, to); no __node/__ns, no node scope."""
+    rules = []
+    for index in range(1, len(args)):
+        if args[index - 1] in _REMAP_FLAGS and ":=" in args[index]:
+            source, _, target = args[index].partition(":=")
+            if not source.startswith("__") and ":" not in source:
+                rules.append((index, source, target))
+    return rules
+
+
+def world(processes: list[dict[str, Any]], file_name: str) -> Ros2Turtlesim | None:
+    """The launch file's turtlesim_node (None without one); LaunchError for two, or remaps that merge its names."""
+    started = [p for p in processes if is_world(p)]
+    if not started:
+        return None
+    if len(started) > 1:
+        where = ", ".join(_full_name(p) for p in started)
+        raise LaunchError(f"{file_name} starts turtlesim_node {len(started)} times ({where}); rosgrade simulates one "
+                          "turtlesim window, so a task cannot run two: start turtlesim_node once and /spawn a second "
+                          "turtle in it (turtle2) for the other turtle")
+    process = started[0]
+    node_name, namespace = _identity(process)
+    remaps = {expand(s, node_name, namespace): expand(t, node_name, namespace) for _, s, t in _rules(process["args"])}
+    launched = {}
+    for leaf in ROS2_WORLD_NAMES:
+        name = expand(leaf, node_name, namespace)
+        launched["/" + leaf] = remaps.get(name, name)
+    if len(set(launched.values())) < len(launched):
+        raise LaunchError(f"{file_name}: the remappings of turtlesim_node give two of its topics or services the same "
+                          "name; rosgrade cannot run turtlesim that way")
+    return Ros2Turtlesim(process, {w: name for w, name in launched.items() if w != name})
+
+
+def bridged(args: list[str], process: dict[str, Any], turtlesim: Ros2Turtlesim | None) -> list[str]:
+    """The node's argv with its own rules' targets led to the world and the bridge's rules after them."""
+    if turtlesim is None or not turtlesim.launched:
+        return list(args)
+    node_name, namespace = _identity(process)
+    leads = {launched: world_name for world_name, launched in turtlesim.launched.items()}
+    for world_name in turtlesim.launched:
+        leads.setdefault(world_name, UNSERVED + world_name)
+    out = list(args)
+    remapped = set()
+    for index, source, target in _rules(out):
+        remapped.add(expand(source, node_name, namespace))
+        lead = leads.get(expand(target, node_name, namespace))
+        if lead is not None:
+            out[index] = f"{source}:={lead}"
+    extra = [word for source, target in sorted(leads.items()) if source not in remapped
+             for word in ("-r", f"{source}:={target}")]
+    return [*out, "--ros-args", *extra] if extra else out
+
+
+def finding(turtlesim: Ros2Turtlesim | None, file_name: str) -> list[str]:
+    """What the report says about a turtlesim_node launched under other names than the world's."""
+    if turtlesim is None or not turtlesim.launched:
+        return []
+    moved = ", ".join(f"{turtlesim.launched[w]} (recorded as {w})" for w in ("/turtle1/cmd_vel", "/turtle1/pose")
+                      if w in turtlesim.launched)
+    return [f"{file_name} starts turtlesim_node as {_full_name(turtlesim.process)}, so its turtle uses "
+            f"{moved or 'other service names'}, as with ros2 launch; turtlesim's usual names reach no turtle."]
