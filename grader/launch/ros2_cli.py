@@ -9,6 +9,9 @@ from typing import Any
 from grader.launch.ros2_eval import Evaluation, Ros2LaunchError, evaluate
 from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_index import installed, not_installed, workspace_for
+from grader.launch.ros2_turtlesim import is_world
+from grader.provided_nodes import launched_script
+from grader.runtime.client_library import ROS2
 from grader.workspace import WorkspaceError, read_workspace
 
 __all__ = ["Ros2LaunchError", "command", "is_ros2_target"]
@@ -90,12 +93,18 @@ def external_include_notes(result: dict[str, Any]) -> list[str]:
 def nodes_text(result: dict[str, Any]) -> str:
     """One line per process launch would start, in its start order."""
     lines = []
+    worlds = 0
     for process in result.get("processes", []):
         if process["kind"] == "node":
             external = " (external: not run by rosgrade)" if process.get("external") else ""
-            if process.get("world"):
-                simulated = process["executable"] == "turtlesim_node"
-                external = " (simulated by rosgrade)" if simulated else " (not run by rosgrade)"
+            if is_world(process):
+                worlds += 1
+                external = (" (simulated by rosgrade)" if worlds == 1 else
+                            " (not run: rosgrade simulates one turtlesim; a task refuses a second)")
+            elif launched_script(process["package"], process["executable"], ROS2) is not None:
+                external = " (run by rosgrade as turtlesim's own node)"
+            elif process.get("world"):
+                external = " (not run by rosgrade)"
             lines.append(f"{_full_name(process)}  ({process['package']} {process['executable']}){external}"
                          f"{_trigger(process)}")
         else:

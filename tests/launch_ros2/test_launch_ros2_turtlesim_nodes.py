@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from grader.cli import main
 from grader.launch import LaunchError
 from grader.launch.ros2_specs import ros2_node_specs
 from grader.provided_nodes import GRADER_NODES
@@ -115,3 +116,13 @@ def test_a_turtlesim_node_rosgrade_does_not_ship_is_still_said_not_to_run(tmp_pa
     assert [s.script.name for s in specs] == ["pubvel.py"]
     assert findings == ["case.launch.py starts turtlesim draw_square, which rosgrade does not run (not part of the "
                         "graded simulation)."]
+
+
+def test_rosgrade_launch_nodes_says_which_turtlesim_nodes_run(capsys: pytest.CaptureFixture[str]) -> None:
+    tutorial = Path(__file__).resolve().parent / "cases" / "ws" / "course_pkg" / "launch" / "turtlesim_mimic.launch.py"
+    assert main(["launch", str(tutorial), "--nodes"]) == 0
+    assert capsys.readouterr().out == (
+        "/turtlesim1/sim  (turtlesim turtlesim_node) (simulated by rosgrade)\n"
+        "/turtlesim2/sim  (turtlesim turtlesim_node) (not run: rosgrade simulates one turtlesim; a task refuses a "
+        "second)\n"
+        "/mimic  (turtlesim mimic) (run by rosgrade as turtlesim's own node)\n")
