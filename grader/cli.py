@@ -5,14 +5,12 @@ import argparse
 import contextlib
 import importlib
 import json
-import math
 import os
 import sys
-import tempfile
 import time
 import traceback
 import zipfile
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -43,6 +41,11 @@ class CliError(Exception):
 def _module(name: str) -> Any:
     """Import a grader module when it is needed (keeps `rosgrade --help` fast, and tests can stand in for it)."""
     return importlib.import_module(name)
+
+
+def _command(module: str, name: str) -> Callable[[argparse.Namespace], int]:
+    """The handler of a command that lives in a module of its own, imported when the command runs."""
+    return lambda args: getattr(_module(module), name)(args)
 
 
 def _domain_errors() -> tuple[type[Exception], ...]:
@@ -370,101 +373,6 @@ def _rubric_dict(rubric: Any) -> dict[str, Any]:
     }
 
 
-def cmd_bench(args: argparse.Namespace) -> int:
-    """Speed on this machine: physics real-time factor, node runs, and a whole check of the reference solutions."""
-    err = Console(stderr=True)
-    check_bench = _module("grader.check_bench")
-    figures: dict[str, Any] = {"load_average_before": check_bench.load_average()}
-    samples: list[dict[str, Any]] = []
-
-    def measure_physics() -> None:
-        with err.status(f"Measuring physics speed (best of {args.repeats}) …"):
-            samples.extend(_module("sim.bench").physics_benchmark(robot=args.robot, sim_seconds=args.seconds)
-                           for _ in range(max(1, args.repeats)))
-
-    measure_physics()
-    runtime: dict[str, Any] = {}
-    if not args.no_node_runs:
-        move_circle = args.reference / "move_circle.py" if args.reference else None
-        ros2 = args.reference_ros2 / "move_circle.py" if args.reference_ros2 else None
-        if ros2 is not None and not ros2.is_file():
-            ros2 = next(args.reference_ros2.rglob("move_circle.py"), None)
-        with err.status("Measuring node runs (40 s of sim time each) …"):
-            runtime = _module("grader.runtime.bench").runtime_benchmark(
-                move_circle if move_circle is not None and move_circle.is_file() else None, repeats=args.repeats,
-                move_circle_ros2=ros2)
-    checks = []
-    if args.reference:
-        if not args.reference.exists():
-            raise CliError(f"{args.reference} does not exist; give the reference solutions folder")
-        jobs = args.jobs or _module("grader.runtime.cores").available_cores()
-        for n in dict.fromkeys((1, jobs)):
-            with err.status(f"Checking {escape(str(args.reference))} with -j {n} (best of {args.repeats}) …"):
-                checks.append(check_bench.best_of(args.reference, n, args.repeats))
-    if checks:
-        measure_physics()  # again after the checks: the machine's speed drifts, and the checks keep their best too
-    # Load only ever slows a run down: the fastest sample is the physics figure, as the best check is the check's.
-    physics = {**max(samples, key=lambda sample: sample["rtf"]),
-               "rtf_samples": " ".join(f"{sample['rtf']:.0f}" for sample in samples)}
-    figures["load_average_after"] = check_bench.load_average()
-    if args.json:
-        print(json.dumps({"physics": physics, "runtime": runtime, "check": [_check_dict(c, physics) for c in checks],
-                          **figures}, indent=2, default=str))
-        return EXIT_OK
-    console = Console()
-    tables = [(f"physics ({args.robot}, {args.seconds:g} s simulated)", physics)]
-    if runtime:
-        tables.append(("node runs: process start to closed recording", runtime))
-    for title, values in tables:
-        table = Table(title=title)
-        table.add_column("Figure")
-        table.add_column("Value", justify="right")
-        for key, value in values.items():
-            table.add_row(Text(str(key)), Text(fmt_number(value) if isinstance(value, (int, float)) else str(value)))
-        console.print(table)
-    if checks:
-        _print_checks(console, checks, physics)
-    console.print(Text(f"Load average before: {figures['load_average_before']}; after: "
-                       f"{figures['load_average_after']} (on a loaded machine wall times grow; ratios less so)."))
-    return EXIT_OK
-
-
-def _check_dict(check: Any, physics: dict[str, Any]) -> dict[str, Any]:
-    return {"jobs": check.jobs, "wall_s": round(check.wall_s, 3), "cpu_s": round(check.cpu_s, 3),
-            "sim_s": round(check.sim_s, 3), "runs": check.runs, "frames": check.frames,
-            "moments_without_round_trip": check.moments,
-            "sim_s_per_wall_s": round(check.sim_per_wall, 2), "sim_s_per_cpu_s": round(check.sim_per_cpu, 2),
-            "of_physics_rtf": round(check.sim_per_wall / physics["rtf"], 3),
-            "of_physics_cpu_rtf": round(check.sim_per_cpu / physics["cpu_rtf"], 3) if physics.get("cpu_rtf") else None,
-            "score": check.score, "max_score": check.max_score,
-            "stages_s": {name: round(value, 3) for name, value in check.breakdown()}}
-
-
-def _print_checks(console: Console, checks: list[Any], physics: dict[str, Any]) -> None:
-    """The per-stage breakdown of the -j 1 check, then every -j figure against the physics real-time factor."""
-    single = checks[0]
-    stages = Table(title=f"where the -j 1 check's {single.wall_s:.1f} s go ({single.runs} runs, {single.frames} "
-                         f"round trips to nodes and {single.moments} moments nodes ran without one, "
-                         f"{single.sim_s:.0f} s simulated)")
-    for column in ("Stage", "Seconds", "Share", "Per round trip [µs]"):
-        stages.add_column(column, justify="left" if column == "Stage" else "right")
-    for name, seconds in single.breakdown():
-        per_step = f"{seconds / single.frames * 1e6:.0f}" if single.frames else ""
-        stages.add_row(Text(name), f"{seconds:.2f}", f"{seconds / single.wall_s:.0%}", per_step)
-    console.print(stages)
-    summary = Table(title=f"graded sim-s per second against physics alone ({physics['rtf']:.0f}x real time, "
-                          "same run)")
-    for column in ("-j", "Wall [s]", "Machine CPU [s]", "Sim-s / wall-s", "Of physics RTF", "Sim-s / CPU-s",
-                   "Of physics per CPU-s", "Points"):
-        summary.add_column(column, justify="right")
-    cpu_rtf = physics.get("cpu_rtf")
-    for check in checks:
-        summary.add_row(str(check.jobs), f"{check.wall_s:.2f}", f"{check.cpu_s:.2f}", f"{check.sim_per_wall:.1f}",
-                        f"{check.sim_per_wall / physics['rtf']:.2f}", f"{check.sim_per_cpu:.1f}",
-                        f"{check.sim_per_cpu / cpu_rtf:.2f}" if cpu_rtf else "", fmt_points(check.score, check.max_score))
-    console.print(summary)
-
-
 def cmd_gradescope_package(args: argparse.Namespace) -> int:
     """Build the Gradescope autograder zip."""
     from grader.platforms.gradescope_package import build_autograder_zip
@@ -482,177 +390,6 @@ def cmd_gradescope_package(args: argparse.Namespace) -> int:
         "Gradescope as the autograder zip (Ubuntu 22.04 or 24.04 base); its README.md says what it does and how long it takes.",
         highlight=False, markup=False,
     )
-    return EXIT_OK
-
-
-def _launch_target(args: argparse.Namespace) -> tuple[Path, dict[str, Path], dict[str, str]]:
-    """The launch file, the packages $(find) sees and the args, from `FILE args...` or `PKG FILE args...`."""
-    from grader.launch import enclosing_package, find_packages
-    from grader.runtime.scripts import candidates
-
-    words = list(args.args)
-    # `roslaunch PKG FILE`: a bare package name (no path, no extension) that is not a file here, then a file name.
-    by_package = (not args.file.exists() and str(args.file).replace("_", "a").isalnum() and bool(words)
-                  and ":=" not in words[0])
-    file_name = words.pop(0) if by_package else None
-    values: dict[str, str] = {}
-    for item in words:
-        name, sep, value = item.partition(":=")
-        if not sep or not name:
-            raise CliError(f"{item!r} is not an arg; pass launch args as name:=value")
-        values[name] = value
-    if by_package:
-        roots = args.packages or [Path.cwd()]
-    else:
-        package = enclosing_package(args.file.resolve())
-        roots = args.packages or ([package.parent] if package else [args.file.resolve().parent])
-    packages: dict[str, Path] = {}
-    for root in roots:
-        packages = find_packages(root) | packages
-    if not by_package:
-        return args.file, packages, values
-    pkg = str(args.file)
-    if pkg not in packages:
-        raise CliError(f"no package named {pkg} under {', '.join(map(str, roots))} (package.xml <name>); "
-                       "pass --packages DIR or the launch file's path")
-    found = candidates(packages[pkg], file_name)
-    if not found:
-        raise CliError(f"no launch file named {file_name} in package {pkg} ({packages[pkg]})")
-    return found[0], packages, values
-
-
-def cmd_launch(args: argparse.Namespace) -> int:
-    """Print what a launch file sets and starts, exactly as `roslaunch --dump-params` / `--nodes` print it."""
-    from grader.launch import LaunchError, dump_params, node_names, read_launch
-    from grader.launch import ros2_cli
-
-    if ros2_cli.is_ros2_target(args.file, args.args, args.workspace):
-        mode = "json" if args.json else "show-args" if args.show_args else "dump-params" if args.dump_params \
-            else "nodes"
-        try:
-            text, notes = ros2_cli.command(args.file, args.args, args.workspace, mode)
-        except ros2_cli.Ros2LaunchError as exc:
-            raise CliError(str(exc)) from None
-        for note in notes:
-            print(f"rosgrade: note: {note}", file=sys.stderr)
-        sys.stdout.write(text)
-        return EXIT_OK
-    if args.json or args.show_args:
-        raise CliError("--json and --show-args are for ROS 2 launch files (.launch.py); for roslaunch XML use "
-                       "--nodes or --dump-params")
-    if not (args.nodes or args.dump_params):
-        raise CliError("say what to print: --nodes or --dump-params")
-    file, packages, values = _launch_target(args)
-    try:
-        launch = read_launch(file, values, packages, os.environ)
-    except LaunchError as exc:
-        raise CliError(str(exc)) from None
-    for note in launch.notes:
-        print(f"rosgrade: note: {note}", file=sys.stderr)
-    for world in launch.worlds:
-        print(f"rosgrade: note: {world.where}: {world.package}/{world.file} is simulated by rosgrade ({world.robot} "
-              f"at x={world.x:g}, y={world.y:g}); its Gazebo nodes and parameters are not listed", file=sys.stderr)
-    sys.stdout.write(dump_params(launch) if args.dump_params else node_names(launch))
-    return EXIT_OK
-
-
-def _tolerance_text(tolerance: Any) -> str:
-    """A criterion's tolerance in short words: full credit range, then how far outside credit lasts."""
-    lo, hi = tolerance.bounds
-    full = f"= {lo:g}" if lo == hi else f"in [{lo:g}, {hi:g}]"
-    if tolerance.margin == 0:
-        return f"{full}, else 0"
-    return f"{full} ±{tolerance.margin:g}" + ("" if tolerance.sigmoid == "linear" else f" {tolerance.sigmoid}")
-
-
-def _start_pose(scenario: Any) -> tuple[float, float, float]:
-    pose = _module("sim.worlds").start_pose(scenario)
-    return pose.x, pose.y, pose.yaw
-
-
-def rubric_plan(rubric: Any) -> dict[str, Any]:
-    """What a rubric will run and score, as data (for `rubric check` and its --json)."""
-    return {
-        **_rubric_dict(rubric),
-        "file": str(rubric.source),
-        "nodes": [{"script": n.script, "aliases": n.aliases, "args": n.args} for n in rubric.nodes],
-        "sim_seconds": sum(s.duration for s in rubric.scenarios),
-        "scenarios": [{
-            "name": s.name, "description": s.description, "start_pose": list(_start_pose(s)),
-            "start_time": s.start_time, "duration": s.duration, "shutdown_at": s.shutdown_at,
-            "imperfections": s.imperfections.model_dump(), "scripted_commands": len(s.script),
-            "stdin": s.stdin, "params": s.params,
-        } for s in rubric.scenarios],
-        "criteria": [{
-            "id": c.id, "title": c.title, "points": c.points, "visibility": c.visibility, "metric": c.metric,
-            "scored": [{"quantity": q, "tolerance": _tolerance_text(t)}
-                       for q, t in [(c.quantity, c.tolerance), *((p.quantity, p.tolerance) for p in c.parts)]],
-            "scenarios": [s.name for s in rubric.scenario_list(c)], "combine": c.combine, "hints": len(c.hints),
-        } for c in rubric.criteria],
-    }
-
-
-def cmd_rubric_check(args: argparse.Namespace) -> int:
-    """Validate a rubric file and show what it will run and score."""
-    plan = rubric_plan(_module("grader.rubric").load_rubric(args.file))
-    if args.json:
-        print(json.dumps(plan, indent=2))
-        return EXIT_OK
-    console = Console()
-    scripts = ", ".join(" or ".join([n["script"], *n["aliases"]]) for n in plan["nodes"])
-    console.print(f"{plan['file']}: task {plan['id']!r} ({plan['title']}), robot {plan['robot']}, runs {scripts}",
-                  highlight=False, markup=False)
-    runs = Table(title="scenarios (each one run of the node)")
-    for column in ("Scenario", "Start pose (x, y, yaw)", "Clock", "Length", "Ctrl+C", "Other"):
-        runs.add_column(column)
-    for s in plan["scenarios"]:
-        x, y, yaw = s["start_pose"]
-        other = [f"{k} {v:g}" for k, v in s["imperfections"].items() if v]
-        other += [f"{s['scripted_commands']} scripted commands"] if s["scripted_commands"] else []
-        other += [f"stdin {s['stdin']!r}"] if s["stdin"] is not None else []
-        other += [f"{k} {v}" for k, v in s["params"].items()]
-        runs.add_row(Text(s["name"]), f"{fmt_number(x)}, {fmt_number(y)}, {math.degrees(yaw):.0f}°", f"{s['start_time']:g} s",
-                     f"{s['duration']:g} s", "-" if s["shutdown_at"] is None else f"at {s['shutdown_at']:g} s",
-                     Text(", ".join(other) or "-"))
-    console.print(runs)
-    scored = Table(title="criteria (credit: full in the range, falling to 0 at ± margin outside it)")
-    scored.add_column("Criterion", no_wrap=True)
-    for column in ("Points", "Metric", "Scored on", "Scenarios"):
-        scored.add_column(column)
-    for c in plan["criteria"]:
-        every = len(c["scenarios"]) == len(plan["scenarios"])
-        where = "all" if every else ", ".join(c["scenarios"])
-        scored.add_row(Text(c["id"] + ("" if c["visibility"] == "visible" else f" [{c['visibility']}]")),
-                       fmt_number(float(c["points"])), Text(c["metric"]),
-                       Text("\n".join(f"{p['quantity']} {p['tolerance']}" for p in c["scored"])),
-                       Text(where if c["combine"] == "min" else f"{where} (mean)"))
-    console.print(scored)
-    n_criteria, n_scenarios = len(plan["criteria"]), len(plan["scenarios"])
-    console.print(f"OK: {n_criteria} criteri{'on' if n_criteria == 1 else 'a'} worth "
-                  f"{fmt_number(float(plan['max_score']))} points over {n_scenarios} scenario"
-                  f"{'' if n_scenarios == 1 else 's'} ({plan['sim_seconds']:g} s of simulated time per submission).",
-                  highlight=False, markup=False)
-    return EXIT_OK
-
-
-def cmd_rubric_try(args: argparse.Namespace) -> int:
-    """Grade one submission with a rubric file that need not be installed (an instructor's new task)."""
-    from grader.reports.folder import write_report_folder
-
-    rubric = _module("grader.rubric").load_rubric(args.file)
-    check_input(args.submission)
-    out_dir: Path = args.out or default_out(args.submission)
-    err = Console(stderr=True)
-    with _stdout_to_stderr(args.json), err.status(f"Grading {escape(str(args.submission))} with {rubric.id} …"):
-        report = _module("grader.grading").grade_submission(
-            args.submission, out_dir, [rubric.id], rubrics={rubric.id: rubric}).total()
-        files = write_report_folder(report, out_dir)
-    if args.json:
-        print(report.model_dump_json(indent=2))
-        return EXIT_OK
-    console = Console()
-    print_report(console, report)
-    _print_footer(console, report, files)
     return EXIT_OK
 
 
@@ -763,7 +500,7 @@ def build_parser() -> argparse.ArgumentParser:
                        help="simulated seconds for each physics sample (default 300: a few wall seconds, long "
                             "enough to average a virtual machine's speed drift, as a whole check does)")
     bench.add_argument("--json", action="store_true", help="print the figures as JSON")
-    bench.set_defaults(handler=cmd_bench)
+    bench.set_defaults(handler=_command("grader.cli_bench", "cmd_bench"))
 
     package = commands.add_parser("gradescope-package", help="build the Gradescope autograder zip")
     package.add_argument("--task", action="append", required=True, metavar="ID", help="task to grade (repeatable)")
@@ -788,21 +525,21 @@ def build_parser() -> argparse.ArgumentParser:
                                                             "processes `ros2 launch` would start)")
     shown.add_argument("--show-args", action="store_true", help="ROS 2: the arguments, as `ros2 launch --show-args`")
     shown.add_argument("--json", action="store_true", help="ROS 2: every process with its argv and parameter files")
-    launch.set_defaults(handler=cmd_launch)
+    launch.set_defaults(handler=_command("grader.cli_launch", "cmd_launch"))
     rubric = commands.add_parser("rubric", help="check or try out a rubric file",
                                  description="Work on a task's rubric TOML (see rubrics/README.md).")
     rubric_commands = rubric.add_subparsers(dest="rubric_command", required=True, metavar="ACTION")
     rubric_check = rubric_commands.add_parser("check", help="validate a rubric and show what it runs and scores")
     rubric_check.add_argument("file", type=Path, metavar="FILE", help="the rubric .toml")
     rubric_check.add_argument("--json", action="store_true")
-    rubric_check.set_defaults(handler=cmd_rubric_check)
+    rubric_check.set_defaults(handler=_command("grader.cli_rubric", "cmd_rubric_check"))
     rubric_try = rubric_commands.add_parser("try", help="grade one submission with a rubric file")
     rubric_try.add_argument("file", type=Path, metavar="FILE", help="the rubric .toml")
     rubric_try.add_argument("submission", type=Path, metavar="SUBMISSION",
                             help="a .py file, a catkin package, a workspace src/ folder or a .zip")
     rubric_try.add_argument("--out", type=Path, metavar="DIR", help="report folder (default: rosgrade-out/<name>)")
     rubric_try.add_argument("--json", action="store_true", help="print the report JSON on stdout and nothing else")
-    rubric_try.set_defaults(handler=cmd_rubric_try)
+    rubric_try.set_defaults(handler=_command("grader.cli_rubric", "cmd_rubric_try"))
     return parser
 
 
