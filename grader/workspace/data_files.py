@@ -43,7 +43,9 @@ def _joined(node: ast.AST, text: Text) -> str | None:
 
 
 def _text(node: ast.AST, text: Text) -> str | None:
-    return text(node) if text(node) is not None else _joined(node, text)
+    """A text setup.py's constants give, or an os.path.join of such texts."""
+    value = text(node)
+    return value if value is not None else _joined(node, text)
 
 
 def _sources(node: ast.AST, text: Text) -> list[tuple[str, str]]:
