@@ -343,4 +343,27 @@ CASES = [
         "unknown node !! RCLError Failed to get action client names and type: error not set",
         "end",
     ), stderr_empty=True),
+    # Graph queries across nodes (issue 28): two nodes of one process beside the robot; facts, not the robot's names.
+    Case("p17_graph_two_nodes", "p17_graph_two_nodes.py", duration=4.0, stdout=(
+        "own nodes listed True True",
+        "fully qualified True True",
+        "a robot node beside them True",
+        "robot seen: /odom publishers >= 1 True /cmd_vel subscribers >= 1 True",
+        "other's publishers [('/parameter_events', ['rcl_interfaces/msg/ParameterEvent']), ('/rosout', "
+        "['rcl_interfaces/msg/Log']), ('/team/p17_chatter', ['std_msgs/msg/String'])]",
+        "other's publishers seen by node [('/parameter_events', ['rcl_interfaces/msg/ParameterEvent']), ('/rosout', "
+        "['rcl_interfaces/msg/Log']), ('/team/p17_chatter', ['std_msgs/msg/String'])]",
+        "other's subscribers [('/clock', ['rosgraph_msgs/msg/Clock']), ('/p17_heard', ['std_msgs/msg/String'])]",
+        "other's services [('/team/p17_switch', ['std_srvs/srv/SetBool'])]",
+        "other's parameter services True",
+        "node's clients [('/team/p17_switch', ['std_srvs/srv/SetBool'])]",
+        "switch in all services ['std_srvs/srv/SetBool']",
+        "chatter in topics ['std_msgs/msg/String']",
+        "counts chatter 1 0 heard 1 switch 1 1 rosout >=2 True",
+        "unknown node !! NodeNameNonExistentError cannot get publisher names and types for nonexistent node: error not "
+        "set",
+        "unknown node !! NodeNameNonExistentError cannot get service names and types for nonexistent node: error not "
+        "set",
+        "end",
+    ), stderr_empty=True),
 ]

@@ -421,7 +421,7 @@ class Node:
         """Every service on the graph the node sees (parameter services included), sorted by name as rcl gives them.
         COM2009's number_game.py logs the first one's name."""
         self.handle
-        pairs = [(service.srv_name, _graph.type_of(service.srv_type)[0]) for service in self._services]
+        pairs = [pair for node in self._local_nodes() for pair in node._own("srv")]
         return _graph.names_and_types(pairs + [srv for node in _graph.others() for srv in node["srv"]])
 
     def get_node_names(self) -> list[str]:
