@@ -80,7 +80,9 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
     if error:
         where = f" (at {error['where']})" if error.get("where") else ""
         hint = hint_for(error["message"], workspace)
-        raise LaunchError(f"{file.name}: [ERROR] [launch]: {error['message']}{where}" + (f" {hint}" if hint else ""))
+        said = f"{file.name}: [ERROR] [launch]: {error['message']}{where}"
+        # launch's own text, then what to change, as its own sentence
+        raise LaunchError(said + (("" if said.endswith((".", "!", "?")) else ".") + f" {hint}" if hint else ""))
     declared = {a["name"] for a in result.get("arguments", [])}
     findings = [f"{file.name} {note}" for note in external_include_notes(result)]
     findings += [f"{file.name} declares no argument {name}, so `ros2 launch` ignored the task's {name}:={value}: "

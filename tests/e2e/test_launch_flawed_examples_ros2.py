@@ -19,7 +19,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "submissions_example"
       "add install(DIRECTORY launch DESTINATION share/${PROJECT_NAME}) to CMakeLists.txt"]),
     ("tomas_ros2_launch_undeclared",
      ["[ERROR] [launch]: Caught exception in launch (see debug for traceback): launch configuration 'speed' does not "
-      "exist", "DeclareLaunchArgument('speed', default_value=...)"]),
+      "exist. ", "DeclareLaunchArgument('speed', default_value=...)"]),  # launch's text, then the fix
 ])
 def test_a_launch_file_ros2_launch_refuses_is_reported_with_its_error(tmp_path: Path, student: str,
                                                                       says: list[str]) -> None:
