@@ -3,8 +3,9 @@
 A node asks with a GRAPH frame and gets a GRAPH_VIEW at once (rosgrade_channel): its own endpoints it knows itself,
 so the view lists the others. Nodes run one at a time in lockstep, so the answer at the asker's time is the same on
 every run. Under ROS 2 a node sees another only after DDS discovery (``discovery_ns`` after both started, the
-world's from its own start); under ROS 1 the master knows every registration at once. The encoded view is kept for
-the asker's time, so a node asking in a loop costs the grader one send per ask, and it is bounded by the frame cap.
+world's from its own start); under ROS 1 the master knows every registration at once. The encoded view is kept until
+a node's endpoints or discovery change, so a node asking in a loop costs the grader a comparison and a send per ask,
+and a view is bounded by the frame cap.
 """
 from __future__ import annotations
 
@@ -62,10 +63,13 @@ class GraphView:
         if not 0 <= asker < len(peers):
             raise GraphError(f"no node {asker} in a run of {len(peers)}")
         fixed = tuple(self._fixed())
-        key = (asker, t_ns, fixed)
+        seen = [self._discovered(peer, t_ns) for peer in peers]
+        # What the view depends on, in O(nodes): a node asking again and again costs one comparison per ask.
+        key = (asker, fixed, tuple((p.state.graph_version, p.alive, s) for p, s in zip(peers, seen)))
         if self._cached is not None and self._cached[0] == key:
             return self._cached[1]
-        nodes = self._seen(peers, asker, t_ns, fixed)
+        nodes = [] if not seen[asker] else [node.entry() for node in fixed] + [
+            _entry(peer.state) for index, peer in enumerate(peers) if index != asker and peer.alive and seen[index]]
         payload = json.dumps({"nodes": nodes}, separators=(",", ":")).encode()
         while len(payload) > self._limit and nodes:  # only a run of flooding nodes gets here: the last ones go
             nodes.pop()
@@ -73,24 +77,22 @@ class GraphView:
         self._cached = (key, payload)
         return payload
 
-    def _seen(self, peers: list[Peer], asker: int, t_ns: int, fixed: tuple[FixedNode, ...]) -> list[dict]:
-        own = peers[asker].state
-        if own.init_ns is None or t_ns < own.init_ns + self._discovery_ns:
-            return []
-        nodes = [node.entry() for node in fixed]
-        for index, peer in enumerate(peers):
-            st = peer.state
-            if index == asker or not peer.alive or st.name is None or t_ns < st.init_ns + self._discovery_ns:
-                continue
-            nodes.append({"name": st.name, "kind": "node", "pub": _open(st.publishers.values(), t_ns),
-                          "sub": _open(st.subscribers.values(), t_ns), "srv": _open(st.services.values(), t_ns)})
-        return nodes
+    def _discovered(self, peer: Peer, t_ns: int) -> bool:
+        """Whether a node has a name on the graph and its DDS discovery (none under ROS 1) is over at ``t_ns``."""
+        st = peer.state
+        return st.name is not None and st.init_ns is not None and t_ns >= st.init_ns + self._discovery_ns
 
 
-def _open(endpoints, t_ns: int) -> list[list[str]]:
-    """[topic, type] of the open endpoints registered by ``t_ns``, sorted, each pair once."""
-    return [list(pair) for pair in sorted({(e.topic, e.type) for e in endpoints
-                                           if not e.closed and e.registered_ns <= t_ns})]
+def _entry(st: NodeState) -> dict:
+    """A node of the run as GRAPH_VIEW lists it. Nodes run one at a time in lockstep, so everything another node
+    registered happened at or before the asker's time."""
+    return {"name": st.name, "kind": "node", "pub": _open(st.publishers.values()),
+            "sub": _open(st.subscribers.values()), "srv": _open(st.services.values())}
+
+
+def _open(endpoints) -> list[list[str]]:
+    """[topic, type] of the open endpoints, sorted, each pair once."""
+    return [list(pair) for pair in sorted({(e.topic, e.type) for e in endpoints if not e.closed})]
 
 
 def for_session(session, plan) -> GraphView:

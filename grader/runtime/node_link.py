@@ -162,6 +162,7 @@ class NodeState:
     param_bytes: int = 0  # what its PARAM frames carried, against MAX_PARAM_BYTES
     output_truncated: bool = False
     stderr_tail: deque = field(default_factory=lambda: deque(maxlen=4))  # last lines, for start-up failures
+    graph_version: int = 0  # counts its name and endpoint changes: what others see of it changed (runtime/graph.py)
 
 
 # A node needs a handful of publishers and subscribers; past this many it is flooding the grader's memory and reports.
@@ -387,6 +388,7 @@ class NodeLink:
             for endpoint in (st.publishers.get(frame.id), st.subscribers.get(frame.id), st.services.get(frame.id)):
                 if endpoint is not None:
                     endpoint.closed = True
+                    st.graph_version += 1
             return None
         if kind == ch.INIT:
             self._init(frame, t_ns)
@@ -422,6 +424,7 @@ class NodeLink:
                             md5sum=frame.md5sum,
                             queue_size=frame.queue_size, latch=frame.latch, registered_ns=t_ns)
         table[endpoint.ident] = endpoint
+        st.graph_version += 1
         return endpoint if kind == ch.SUBSCRIBE else None
 
     def _call(self, frame: frames.Call, request: bytes) -> ServiceCall:
@@ -453,6 +456,7 @@ class NodeLink:
         endpoint = Endpoint(ident=frame.id, topic=_topic(frame.service, "service"), type=frame.type,
                             md5sum=frame.md5sum, queue_size=None, latch=False, registered_ns=t_ns)
         st.services[frame.id] = endpoint
+        st.graph_version += 1
         return ServiceOffer(endpoint)
 
     def _respond(self, frame: frames.Respond, response: bytes) -> ServiceAnswer:
@@ -496,6 +500,7 @@ class NodeLink:
                 f"({', '.join(sorted(self._reserved))}, /rosgrade...); on a real ROS system a second node with that "
                 "name shuts the first one down. Choose another name")
         st.name, st.init_ns, st.disable_signals = frame.name, t_ns, frame.disable_signals
+        st.graph_version += 1
 
     def _output(self, stream: int, text: bytes) -> list[OutputLine] | None:
         st = self.state

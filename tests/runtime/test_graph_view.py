@@ -1,5 +1,5 @@
 """The run's graph as one node sees it (grader/runtime/graph.py): discovery under ROS 2, at once under ROS 1, closed
-endpoints and ended nodes gone, one encoding per asker and time, and a flooding run cut to the frame cap."""
+endpoints and ended nodes gone, one encoding until something changes, and a flooding run cut to the frame cap."""
 from __future__ import annotations
 
 import json
@@ -52,22 +52,23 @@ def test_under_ros2_a_node_sees_others_only_after_both_discovered_them() -> None
 
 
 def test_under_ros1_registrations_are_seen_at_once_and_closed_or_ended_ones_not() -> None:
-    talker = _state("/talker", 0, publishers=[_endpoint(1, "/chatter", "std_msgs/String", 300),
-                                              _endpoint(2, "/old", "std_msgs/String", 0, closed=True)],
-                    services=[_endpoint(3, "/switch", "std_srvs/SetBool", 0)])
+    talker = _state("/talker", 0, publishers=[_endpoint(1, "/chatter", "std_msgs/String"),
+                                              _endpoint(2, "/old", "std_msgs/String", closed=True)],
+                    services=[_endpoint(3, "/switch", "std_srvs/SetBool")])
     peers = [Peer(_state("/watcher"), True), Peer(talker, True), Peer(_state("/ended"), False)]
-    view = _view(peers, discovery_ns=0)
-    assert json.loads(view.answer(0, 200))["nodes"][1]["pub"] == []  # registered later than the asker's time
-    node = json.loads(view.answer(0, 300))["nodes"][1]
+    node = json.loads(_view(peers, discovery_ns=0).answer(0, 0))["nodes"][1]
     assert node["pub"] == [["/chatter", "std_msgs/String"]] and node["srv"] == [["/switch", "std_srvs/SetBool"]]
-    assert _names(view, 0, 300) == ["/gazebo", "/talker"]
+    assert _names(_view(peers, discovery_ns=0), 0, 0) == ["/gazebo", "/talker"]
 
 
-def test_asking_again_at_the_same_time_reuses_the_encoding_and_a_new_time_does_not() -> None:
-    view = _view([Peer(_state("/watcher"), True), Peer(_state("/talker"), True)], discovery_ns=0)
+def test_asking_again_reuses_the_encoding_until_a_node_changes_what_others_see_of_it() -> None:
+    talker = _state("/talker")
+    view = _view([Peer(_state("/watcher"), True), Peer(talker, True)], discovery_ns=0)
     first = view.answer(0, 10)
-    assert view.answer(0, 10) is first
-    assert view.answer(0, 20) is not first
+    assert view.answer(0, 20) is first
+    talker.publishers[1] = _endpoint(1, "/chatter", "std_msgs/String")
+    talker.graph_version += 1  # as the node link counts a registration
+    assert json.loads(view.answer(0, 30))["nodes"][1]["pub"] == [["/chatter", "std_msgs/String"]]
 
 
 def test_a_view_over_the_frame_cap_drops_the_last_nodes_and_says_it_was_cut() -> None:
