@@ -62,3 +62,12 @@ def test_a_rospy_node_sees_another_nodes_publication_once_it_registered(tmp_path
     seen = [line.split(" ", 2)[2] for line in printed]
     # the watcher starts first and looks before the talker has registered; from then on the master knows /chatter
     assert seen[0] == "None" and set(seen[1:]) == {"std_msgs/String"}
+
+
+def test_a_rospy_node_sees_what_the_scenario_publishes_as_rostopic_pub_registers_it(tmp_path) -> None:
+    publication = {"t": 0.0, "topic": "/chatter", "type": "std_msgs/String", "values": {"data": "hi"}, "rate": 2}
+    run(RunSpec(scenario=Scenario(duration=1.0, publications=[publication]),
+                nodes=(NodeSpec(script=NODES / "graph_rospy_watcher.py", flavour="ros1"),)),
+        tmp_path / "run.mcap", tmp_path / "run.log")
+    printed = [text for _, stream, text in Recording.open(tmp_path / "run.mcap").output_lines() if stream == "stdout"]
+    assert printed and {line.split(" ", 2)[2] for line in printed} == {"std_msgs/String"}
