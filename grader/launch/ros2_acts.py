@@ -11,6 +11,7 @@ from typing import Any
 import yaml
 from pydantic import ValidationError
 
+from grader.launch.ros2_turtlesim import is_world
 from grader.nodelib.common.rosgrade_param_files import ParamFileError, ParamSet
 from sim.scenario import ActionGoalSpec, ParamSetSpec, PublicationSpec, Scenario, ServiceCallSpec
 
@@ -129,7 +130,7 @@ def launch_acts(processes: list[dict[str, Any]], file_name: str) -> tuple[Launch
     findings: list[str] = []
     handled: set[int] = set()
     for index, process in enumerate(processes):
-        if process.get("world"):
+        if is_world(process):  # turtlesim_node's parameters; teleop's and mimic's are their own
             try:
                 acts.world_params.update(world_params(process))
             except ParamFileError as exc:

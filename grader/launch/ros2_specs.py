@@ -12,6 +12,7 @@ from grader.launch import ros2_turtlesim
 from grader.launch.model import LaunchError
 from grader.launch.ros2_acts import LaunchActs, launch_acts
 from grader.launch.ros2_cli import external_include_notes
+from grader.launch.ros2_exec import exec_nodes
 from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_eval import Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed, not_installed
@@ -68,7 +69,8 @@ def _student_script(process: dict[str, Any], workspace: Workspace, file: Path) -
 def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
                     stdin: str | None) -> tuple[tuple[NodeSpec, ...], list[str], LaunchActs]:
     """The nodes `ros2 launch` would start from `file`, as node specs, with findings and what the grader carries out
-    for its ros2 command lines; LaunchError if it fails."""
+    for its ros2 command lines; LaunchError if it fails. An ExecuteProcess that starts a node (`ros2 run`, a script)
+    is that node."""
     package = workspace.enclosing(file)
     if package is not None and package.build_type != "catkin" and not installed(package, file):
         raise LaunchError(not_installed(package, file))
@@ -88,14 +90,15 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
     findings += [f"{file.name} declares no argument {name}, so `ros2 launch` ignored the task's {name}:={value}: "
                 f"declare it with DeclareLaunchArgument('{name}') and use LaunchConfiguration('{name}') where the "
                 "value is needed." for name, value in args.items() if name not in declared]
-    acts, act_findings, handled = launch_acts(result["processes"], file.name)
-    findings += act_findings
-    turtlesim = ros2_turtlesim.world(result["processes"], file.name)
+    processes, exec_findings = exec_nodes(result["processes"], workspace, file.name)
+    acts, act_findings, handled = launch_acts(processes, file.name)
+    findings += exec_findings + act_findings
+    turtlesim = ros2_turtlesim.world(processes, file.name)
     findings += ros2_turtlesim.finding(turtlesim, file.name)
     specs: list[NodeSpec] = []
     started: dict[str, tuple[int, float]] = {}  # launch's name of each node the run starts -> (index, delay)
-    for index, process in enumerate(result["processes"]):
-        if index in handled or ros2_turtlesim.is_world(process):
+    for index, process in enumerate(processes):
+        if index in handled or ros2_turtlesim.is_world(process) or process["kind"] == "not_run":
             continue
         if process["kind"] != "node":
             findings.append(f"{file.name} starts `{' '.join(process['cmd'])}`: rosgrade runs the nodes of a launch "
@@ -108,7 +111,8 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
             findings.append(f"{file.name} starts {label}, which rosgrade does not run (not part of the graded "
                             "simulation).")
             continue
-        script = GRADER_NODES / shipped if shipped is not None else _student_script(process, workspace, file)
+        script = GRADER_NODES / shipped if shipped is not None else Path(process["script"]) if "script" in process \
+            else _student_script(process, workspace, file)
         if (process.get("after") or {}).get("event") == "shutdown":
             findings.append(f"{file.name}: {label} starts when launch shuts down (OnShutdown); rosgrade does not run "
                             "it, as launch starts nothing once it is shutting down.")
@@ -121,8 +125,8 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
         argv = tuple(ros2_turtlesim.bridged(list(argv), process, turtlesim))
         output = "screen" if process.get("output") == "screen" else "log"
         if shipped is not None:
-            specs.append(replace(provided_spec(shipped, workspace, argv), stdin=stdin, files=files, output=output,
-                                 start=start))
+            specs.append(replace(provided_spec(shipped, workspace), args=argv, stdin=stdin, files=files,
+                                 output=output, start=start))
             continue
         flavour = client_library(script, workspace)
         specs.append(NodeSpec(script=script, args=argv, stdin=stdin, flavour=flavour,

@@ -126,3 +126,13 @@ def test_rosgrade_launch_nodes_says_which_turtlesim_nodes_run(capsys: pytest.Cap
         "/turtlesim2/sim  (turtlesim turtlesim_node) (not run: rosgrade simulates one turtlesim; a task refuses a "
         "second)\n"
         "/mimic  (turtlesim mimic) (run by rosgrade as turtlesim's own node)\n")
+
+
+def test_the_teleops_parameters_are_its_own_not_the_worlds(tmp_path: Path) -> None:
+    specs, _, acts = _specs(tmp_path, """
+        Node(package='turtlesim', executable='turtlesim_node', parameters=[{'background_r': 10}]),
+        Node(package='turtlesim', executable='turtle_teleop_key', parameters=[{'scale_linear': 1.0}]),""")
+    assert acts.world_params == {"background_r": 10}
+    teleop = specs[0]
+    assert teleop.script.name == "turtle_teleop_key_ros2.py"
+    assert [content for _, content in teleop.files] == [b"/**:\n  ros__parameters:\n    scale_linear: 1.0\n"]
