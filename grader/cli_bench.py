@@ -28,20 +28,16 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
     measure_physics()
     runtime: dict[str, Any] = {}
-    lidar: dict[str, Any] = {}
     if not args.no_node_runs:
         move_circle = args.reference / "move_circle.py" if args.reference else None
         ros2 = args.reference_ros2 / "move_circle.py" if args.reference_ros2 else None
         if ros2 is not None and not ros2.is_file():
             ros2 = next(args.reference_ros2.rglob("move_circle.py"), None)
-        with err.status("Measuring node runs (40 s of sim time each) …"):
+        with err.status("Measuring node runs (40 s of sim time each) and what /scan costs a run (60 s with and "
+                        "without) …"):
             runtime = _module("grader.runtime.bench").runtime_benchmark(
                 move_circle if move_circle is not None and move_circle.is_file() else None, repeats=args.repeats,
                 move_circle_ros2=ros2)
-        bench_lidar = _module("grader.runtime.bench_lidar")
-        with err.status(f"Measuring what /scan costs a run ({bench_lidar.SIM_SECONDS:g} s of sim time each, with and "
-                        "without) …"):
-            lidar = bench_lidar.lidar_benchmark(repeats=args.repeats)
     checks = []
     if args.reference:
         if not args.reference.exists():
@@ -57,15 +53,13 @@ def cmd_bench(args: argparse.Namespace) -> int:
                "rtf_samples": " ".join(f"{sample['rtf']:.0f}" for sample in samples)}
     figures["load_average_after"] = check_bench.load_average()
     if args.json:
-        print(json.dumps({"physics": physics, "runtime": runtime, "lidar": lidar,
-                          "check": [_check_dict(c, physics) for c in checks], **figures}, indent=2, default=str))
+        print(json.dumps({"physics": physics, "runtime": runtime, "check": [_check_dict(c, physics) for c in checks],
+                          **figures}, indent=2, default=str))
         return EXIT_OK
     console = Console()
     tables = [(f"physics ({args.robot}, {args.seconds:g} s simulated)", physics)]
     if runtime:
         tables.append(("node runs: process start to closed recording", runtime))
-    if lidar:
-        tables.append(("what /scan costs a run: CPU (grader and node) per sim-second with / without /scan", lidar))
     for title, values in tables:
         table = Table(title=title)
         table.add_column("Figure")

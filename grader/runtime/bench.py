@@ -3,7 +3,7 @@
 Two rospy nodes stand for the two kinds students write: a 10 Hz `Rate` loop (the course's move_circle) and a busy
 loop that publishes with no sleep at all (the Husky tutorial's pattern), where every call costs a sim-time quantum.
 Their rclpy counterparts (the ROS 2 course's timer-driven move_circle, and spin_once in a loop) are timed beside
-them, with the ROS 2 / ROS 1 wall-time ratio.
+them, with the ROS 2 / ROS 1 wall-time ratio; then what /scan costs a run (`bench_lidar`).
 """
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ import tempfile
 import time
 from pathlib import Path
 
+from grader.runtime.bench_lidar import lidar_benchmark
 from grader.runtime.client_library import client_library
 from grader.runtime.session import run
 from grader.runtime.spec import NodeSpec, RunSpec
@@ -107,7 +108,7 @@ def time_run(script: Path, sim_seconds: float, out: Path) -> float:
 def runtime_benchmark(move_circle: Path | None = None, sim_seconds: float = 40.0, repeats: int = 5,
                       move_circle_ros2: Path | None = None) -> dict:
     """Median and best wall time of `sim_seconds` runs, for the move_circle references (if given) and the stand-in
-    nodes, in rospy and rclpy, and each rclpy node's median over its rospy counterpart's."""
+    nodes, in rospy and rclpy, each rclpy node's median over its rospy counterpart's, and the LiDAR cost figures."""
     figures: dict[str, float | str] = {"sim_seconds": sim_seconds, "repeats": repeats}
     with tempfile.TemporaryDirectory(prefix="rosgrade-bench-") as tmp:
         folder = Path(tmp)
@@ -129,6 +130,7 @@ def runtime_benchmark(move_circle: Path | None = None, sim_seconds: float = 40.0
             figures[f"{name}_sim_s_per_wall_s"] = round(sim_seconds / medians[name], 1)
         for name in [n for n in medians if n.endswith("_ros2") and n[:-5] in medians]:
             figures[f"{name}_over_ros1"] = round(medians[name] / medians[name[:-5]], 2)
+    figures.update(lidar_benchmark(repeats=repeats))
     return figures
 
 

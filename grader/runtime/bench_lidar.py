@@ -144,7 +144,7 @@ def summarize(flavour: str, without: list[Sample], with_scan: list[Sample], sim_
 def lidar_benchmark(sim_seconds: float = SIM_SECONDS, repeats: int = 3, flavours: tuple[str, ...] = ("ros1", "ros2")
                     ) -> dict[str, float | str]:
     """The LiDAR cost figures of ``summarize`` for each flavour, from ``repeats`` interleaved pairs of runs."""
-    figures: dict[str, float | str] = {"sim_seconds": sim_seconds, "repeats": repeats}
+    figures: dict[str, float | str] = {"scan_run_sim_seconds": sim_seconds}
     with tempfile.TemporaryDirectory(prefix="rosgrade-lidar-bench-") as tmp:
         folder = Path(tmp)
         for flavour in flavours:
