@@ -349,6 +349,9 @@ CASES = [
         "fully qualified True True",
         "a robot node beside them True",
         "robot seen: /odom publishers >= 1 True /cmd_vel subscribers >= 1 True",
+        "other's action topics ['/team/p17_count/_action/feedback', '/team/p17_count/_action/status']",
+        "other's action services ['/team/p17_count/_action/cancel_goal', '/team/p17_count/_action/get_result', "
+        "'/team/p17_count/_action/send_goal']",
         "other's publishers [('/parameter_events', ['rcl_interfaces/msg/ParameterEvent']), ('/rosout', "
         "['rcl_interfaces/msg/Log']), ('/team/p17_chatter', ['std_msgs/msg/String'])]",
         "other's publishers seen by node [('/parameter_events', ['rcl_interfaces/msg/ParameterEvent']), ('/rosout', "

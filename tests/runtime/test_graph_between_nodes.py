@@ -39,8 +39,12 @@ def test_an_rclpy_node_sees_the_other_node_and_the_world_with_their_endpoints(ro
     assert _at(printed, "nodes") == "[('graph_watcher', '/'), ('gazebo', '/'), ('graph_talker', '/team')]"
     # the robot's base subscribes to /cmd_vel; the talker publishes /chatter and serves /graph_switch
     assert _at(printed, "counts") == "chatter pub 1 cmd_vel sub 1 switch 1"
-    assert _at(printed, "talker") == ("pub [('/chatter', ['std_msgs/msg/String']), ('/parameter_events', "
-                                      "['rcl_interfaces/msg/ParameterEvent']), ('/rosout', ['rcl_interfaces/msg/Log'])]")
+    # an action server's feedback and status publishers are the node's, as rcl lists them
+    assert _at(printed, "talker") == (
+        "pub [('/chatter', ['std_msgs/msg/String']), ('/parameter_events', ['rcl_interfaces/msg/ParameterEvent']), "
+        "('/rosout', ['rcl_interfaces/msg/Log']), ('/team/count/_action/feedback', "
+        "['example_interfaces/action/Fibonacci_FeedbackMessage']), ('/team/count/_action/status', "
+        "['action_msgs/msg/GoalStatusArray'])]")
     assert "talker sub [('/odom', ['nav_msgs/msg/Odometry'])]" in [line.split(" ", 1)[1] for line in printed]
     assert _at(printed, "switch") == (
         "['std_srvs/srv/SetBool'] talker params ['/team/graph_talker/describe_parameters', "
@@ -48,6 +52,8 @@ def test_an_rclpy_node_sees_the_other_node_and_the_world_with_their_endpoints(ro
         "'/team/graph_talker/list_parameters', '/team/graph_talker/set_parameters', "
         "'/team/graph_talker/set_parameters_atomically']")
     assert _at(printed, "chatter") == "['std_msgs/msg/String']"
+    assert _at(printed, "actions") == ("[('/team/count', ['example_interfaces/action/Fibonacci'])] served by talker "
+                                       "[('/team/count', ['example_interfaces/action/Fibonacci'])]")
     assert _at(printed, "nobody") == ("NodeNameNonExistentError cannot get publisher names and types for nonexistent "
                                       "node: error not set")
 

@@ -9,10 +9,16 @@ import time
 
 import rclpy
 from geometry_msgs.msg import Twist
+from rclpy.action import ActionServer
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from std_msgs.msg import String
 from std_srvs.srv import SetBool
+
+try:
+    from example_interfaces.action import Fibonacci
+except ImportError:
+    from test_msgs.action import Fibonacci
 
 # Jazzy's nodes also serve get_type_description (type_description_interfaces), which rosgrade does not: not printed.
 PARAMETER_SERVICES = (("describe_parameters", "DescribeParameters"), ("get_parameter_types", "GetParameterTypes"),
@@ -27,6 +33,7 @@ node.create_client(SetBool, "/team/p17_switch")
 other.create_publisher(String, "p17_chatter", 10)
 other.create_subscription(String, "/p17_heard", lambda msg: None, 10)
 other.create_service(SetBool, "p17_switch", lambda request, response: response)
+ActionServer(other, Fibonacci, "p17_count", lambda goal_handle: Fibonacci.Result())
 executor = SingleThreadedExecutor()
 executor.add_node(node)
 executor.add_node(other)
@@ -41,11 +48,17 @@ print("fully qualified", "/team/p17_other" in node.get_fully_qualified_node_name
 print("a robot node beside them", any(name not in ("p17_graph", "p17_other") for name, _ in names))
 print("robot seen: /odom publishers >= 1", node.count_publishers("/odom") >= 1,
       "/cmd_vel subscribers >= 1", node.count_subscribers("/cmd_vel") >= 1)
-print("other's publishers", other.get_publisher_names_and_types_by_node("p17_other", "/team"))
-print("other's publishers seen by node", node.get_publisher_names_and_types_by_node("p17_other", "/team"))
+# an action server's topics and services are its node's (Fibonacci's package differs: only names printed for them)
+publishers = other.get_publisher_names_and_types_by_node("p17_other", "/team")
+print("other's action topics", [name for name, _ in publishers if "/_action/" in name])
+print("other's action services", [name for name, _ in other.get_service_names_and_types_by_node("p17_other", "/team")
+                                   if "/_action/" in name])
+print("other's publishers", [pair for pair in publishers if "/_action/" not in pair[0]])
+seen = node.get_publisher_names_and_types_by_node("p17_other", "/team")
+print("other's publishers seen by node", [pair for pair in seen if "/_action/" not in pair[0]])
 print("other's subscribers", node.get_subscriber_names_and_types_by_node("p17_other", "/team"))
 services = node.get_service_names_and_types_by_node("p17_other", "/team")
-print("other's services", [s for s in services if not s[0].startswith("/team/p17_other/")])
+print("other's services", [s for s in services if not s[0].startswith("/team/p17_other/") and "/_action/" not in s[0]])
 print("other's parameter services", all(("/team/p17_other/" + name, ["rcl_interfaces/srv/" + kind]) in services
                                         for name, kind in PARAMETER_SERVICES))
 print("node's clients", node.get_client_names_and_types_by_node("p17_graph", "/"))

@@ -443,16 +443,16 @@ class Node:
         return mine + sorted(node["name"] for node in _graph.others())
 
     def _own(self, kind: str) -> list[tuple[str, str]]:
-        """This node's (name, type) of ``kind``, the endpoints rclpy makes for it included (rcl lists them too)."""
-        builtin = self._builtin_topics()
-        if kind == "pub":
-            return [*(pair for pair in builtin if pair[0] != "/clock"),
-                    *((p.topic_name, _graph.type_of(p.msg_type)[0]) for p in self._publishers)]
-        if kind == "sub":
-            return [*(pair for pair in builtin if pair[0] == "/clock"),
-                    *((s.topic_name, _graph.type_of(s.msg_type)[0]) for s in self._subscriptions)]
-        entities = self._services if kind == "srv" else self._clients
-        return [(e.srv_name, _graph.type_of(e.srv_type)[0]) for e in entities]
+        """This node's (name, type) of ``kind``, with the endpoints rclpy makes for the node itself and those of its
+        action servers and clients (rcl lists them all)."""
+        entities = {"pub": self._publishers, "sub": self._subscriptions, "srv": self._services,
+                    "cli": self._clients}[kind]
+        entity_class = {"pub": Publisher, "sub": Subscription, "srv": Service, "cli": Client}[kind]
+        entities = [*entities, *(e for w in self._waitables for e in vars(w).values() if isinstance(e, entity_class))]
+        if kind in ("pub", "sub"):
+            builtin = [pair for pair in self._builtin_topics() if (pair[0] == "/clock") == (kind == "sub")]
+            return builtin + [(e.topic_name, _graph.type_of(e.msg_type)[0]) for e in entities if e._handle is not None]
+        return [(e.srv_name, _graph.type_of(e.srv_type)[0]) for e in entities if not e._destroyed]
 
     def _endpoints_of(self, node_name: str, node_namespace: str, kind: str) -> list[tuple[str, list[str]]]:
         """A node's endpoints of ``kind`` ("pub", "sub", "srv", "cli"); an unknown node is rcl's error."""

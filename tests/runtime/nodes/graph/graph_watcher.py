@@ -1,5 +1,6 @@
 """Graph test node: prints what the graph shows of the other node, the world and itself every 0.25 s."""
 import rclpy
+from rclpy.action import get_action_names_and_types, get_action_server_names_and_types_by_node
 from rclpy.node import Node
 from geometry_msgs.msg import Twist
 
@@ -22,6 +23,8 @@ def look():
         print(f"{now:.2f} switch {services.get('/graph_switch')} talker params "
               f"{sorted(s for s in services if s.startswith('/team/graph_talker/'))}", flush=True)
         print(f"{now:.2f} chatter {dict(node.get_topic_names_and_types()).get('/chatter')}", flush=True)
+        print(f"{now:.2f} actions {get_action_names_and_types(node)} served by talker "
+              f"{get_action_server_names_and_types_by_node(node, 'graph_talker', '/team')}", flush=True)
     try:
         node.get_publisher_names_and_types_by_node("nobody", "/")
     except Exception as exc:
