@@ -41,6 +41,7 @@ UPDATE_NS = 16_000_000  # the Qt update timer's interval
 DT = 0.001 * 16  # turtle_frame.cpp passes 0.001 * interval as dt
 COMMAND_TIMEOUT_NS = 1_000_000_000
 CANVAS_M = (CANVAS_PX - 1) / METER_PX  # 11.0889 m: the window's width in metres
+CANVAS_M32 = struct.unpack("<f", struct.pack("<f", CANVAS_M))[0]  # turtle_frame.hpp keeps it as a float
 CENTRE = CANVAS_M / 2.0  # where turtle1 starts, and starts again after /reset
 # turtle.cpp wraps θ with its own PI macro, not M_PI.
 TURTLE_PI = 3.14159265
@@ -221,7 +222,8 @@ class TurtlesimWorld(ScenarioTimes):
             declared.append(WorldTopic(turtle.topic("pose"), "turtlesim/Pose", rate))
             declared.append(WorldTopic(turtle.topic("color_sensor"), "turtlesim/Color", rate))
         declared.append(WorldTopic(GROUND_TRUTH_TOPIC, "nav_msgs/Odometry", rate, to_nodes=False))
-        declared.append(WorldTopic(ROSOUT, "rosgraph_msgs/Log", 0, to_nodes=False, shared=True))
+        # Jazzy's rclcpp publishes its log on /rosout for any node to hear (the probes read the warnings there).
+        declared.append(WorldTopic(ROSOUT, "rosgraph_msgs/Log", 0, to_nodes=self.flavour == ROS2, shared=True))
         return tuple(declared)
 
     @property
@@ -371,7 +373,7 @@ class TurtlesimWorld(ScenarioTimes):
         turtle.y_screen -= math.cos(theta) * turtle.linear_y * DT + math.sin(theta) * turtle.linear_x * DT
         if not (0.0 <= turtle.x <= CANVAS_M and 0.0 <= turtle.y_screen <= CANVAS_M):
             if out is not None:
-                out.append(LogSample(t_ns, ROSOUT, WARN, NODE_NAME,
+                out.append(LogSample(t_ns, ROSOUT, WARN, self._log_name,
                                      f"Oh no! I hit the wall! (Clamping from [x={turtle.x:f}, y={turtle.y_screen:f}])"))
         turtle.x = min(max(turtle.x, 0.0), CANVAS_M)
         turtle.y_screen = min(max(turtle.y_screen, 0.0), CANVAS_M)
@@ -425,14 +427,25 @@ class TurtlesimWorld(ScenarioTimes):
             while f"turtle{self._id_counter}" in self.turtles:
                 self._id_counter += 1
             name = f"turtle{self._id_counter}"
-        self.turtles[name] = Turtle.spawned(name, x, y, theta)
         # spawnTurtle takes floats: its log line prints them rounded to float32.
         x32, y32, theta32 = struct.unpack("<3f", struct.pack("<3f", x, y, theta))
+        if self.flavour == ROS2:
+            # Jazzy's turtle starts from the floats, its screen y the float difference (height_in_meters_ is a float):
+            # turtle1's y is 5.544445 in the wall warning, not 5.544444 (measured with real_turtlesim2.py).
+            y_screen = struct.unpack("<f", struct.pack("<f", CANVAS_M32 - y32))[0]
+            self.turtles[name] = Turtle(name, x32, y_screen, theta32)
+        else:
+            self.turtles[name] = Turtle.spawned(name, x, y, theta)
         return name, self._log(INFO, f"Spawning turtle [{name}] at x=[{x32:f}], y=[{y32:f}], theta=[{theta32:f}]")
 
     def _log(self, level: int, msg: str) -> LogSample:
         """A line turtlesim logs on /rosout now."""
-        return LogSample(self._time_ns, ROSOUT, level, NODE_NAME, msg)
+        return LogSample(self._time_ns, ROSOUT, level, self._log_name, msg)
+
+    @property
+    def _log_name(self) -> str:
+        """Who /rosout says logged: roscpp gives the node's name, rclcpp its logger's (no leading slash)."""
+        return NODE_NAME if self.flavour != ROS2 else NODE_NAME[1:]
 
     # -- services (turtle_frame.cpp, turtle.cpp) ---------------------------------------------------------------
 

@@ -169,8 +169,12 @@ def _kill_group(pid: int, sig: int = signal.SIGKILL) -> None:
 class RealRos2:
     """A real rclpy robot on a domain id of its own; a context manager; run probes one at a time with `run_probe`."""
 
-    def __init__(self, workdir: Path | None = None, speed: float = 1.0, startup_timeout_s: float = 30.0) -> None:
+    def __init__(self, workdir: Path | None = None, speed: float = 1.0, startup_timeout_s: float = 30.0,
+                 robot_node: Path = ROBOT_NODE, interfaces: Path | None = None) -> None:
+        """`robot_node` stands for the robot (real_turtlesim2.py for turtlesim); `interfaces` is the install folder
+        of an interface package built for real rclpy (build_turtlesim_interfaces.sh), put on every node's paths."""
         self._own_dir = workdir is None
+        self.robot_node, self.interfaces = robot_node, interfaces
         self.dir = Path(workdir or tempfile.mkdtemp(prefix="rosgrade-realros2-"))
         self.speed = speed
         self.startup_timeout_s = startup_timeout_s
@@ -181,7 +185,12 @@ class RealRos2:
         self._lock = threading.Lock()
 
     def env(self) -> dict[str, str]:
-        return ros2_env(self.domain.domain_id, self.dir)
+        env = ros2_env(self.domain.domain_id, self.dir)
+        if self.interfaces is not None:
+            env["AMENT_PREFIX_PATH"] = f"{self.interfaces}:{env['AMENT_PREFIX_PATH']}"
+            env["LD_LIBRARY_PATH"] = f"{self.interfaces / 'lib'}:{env['LD_LIBRARY_PATH']}"
+            env["PYTHONPATH"] = ":".join(str(p) for p in sorted((self.interfaces / "lib").glob("python3*/site-packages")))
+        return env
 
     def __enter__(self) -> RealRos2:
         reason = unavailable_reason()
@@ -202,7 +211,7 @@ class RealRos2:
         for sub in ("ros_home", "log"):
             (self.dir / sub).mkdir(parents=True, exist_ok=True)
         self.robot = subprocess.Popen(
-            [str(venv_python()), str(ROBOT_NODE), "--speed", repr(self.speed)], env=self.env(), cwd=self.dir,
+            [str(venv_python()), str(self.robot_node), "--speed", repr(self.speed)], env=self.env(), cwd=self.dir,
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=open(self.dir / "robot.err", "wb"),
             start_new_session=True, text=True, bufsize=1)
         threading.Thread(target=self._read_robot, daemon=True).start()

@@ -47,24 +47,28 @@ class OursResult:
 
 
 def run_ours(probe: Path, args: tuple[str, ...] = (), *, shutdown_at: float | None = None, duration: float = 4.0,
-             workdir: Path | None = None) -> OursResult:
-    """Run `probe` with `args` under rosgrade; Ctrl+C `shutdown_at` sim s after its '#REF', stopped at `duration`."""
+             workdir: Path | None = None, robot: str = ROBOT, beside: tuple[Path, ...] = ()) -> OursResult:
+    """Run `probe` with `args` under rosgrade; Ctrl+C `shutdown_at` sim s after its '#REF', stopped at `duration`.
+
+    `robot` is the world (``turtlesim`` for Jazzy's turtlesim); `beside` are grader-provided nodes run with the probe
+    (turtlesim's rotate_absolute server, which real turtlesim serves itself)."""
     workdir = Path(workdir or tempfile.mkdtemp(prefix="rosgrade-conformance2-"))
     offset = ORIGIN_GUESS_S
-    result = _run_once(probe, args, shutdown_at, duration, offset, workdir / "first")
+    world = (robot, beside)
+    result = _run_once(probe, args, shutdown_at, duration, offset, workdir / "first", world)
     if shutdown_at is None or result.origin_s is None or result.sigint_s is None:
         return result
     if abs(result.sigint_s - shutdown_at) > 1e-6:
         # Our runs are deterministic: the second run reaches the same '#REF', and Ctrl+C lands where asked.
         offset = result.origin_s - START_TIME_S
-        result = _run_once(probe, args, shutdown_at, duration, offset, workdir / "second")
+        result = _run_once(probe, args, shutdown_at, duration, offset, workdir / "second", world)
         if result.sigint_s is None or abs(result.sigint_s - shutdown_at) > 1e-6:
             raise RosgradeSideError(f"Ctrl+C landed at {result.sigint_s} s after the origin, not {shutdown_at} s")
     return result
 
 
 def _run_once(probe: Path, args: tuple[str, ...], shutdown_at: float | None, duration: float, origin_offset_s: float,
-              workdir: Path) -> OursResult:
+              workdir: Path, world: tuple[str, tuple[Path, ...]]) -> OursResult:
     from grader.recording import Recording
     from grader.runtime.session import run
     from grader.runtime.spec import Limits, NodeSpec, RunSpec
@@ -77,9 +81,10 @@ def _run_once(probe: Path, args: tuple[str, ...], shutdown_at: float | None, dur
     options = {"limits": Limits(wall_s=60.0, silent_wall_s=5.0)}
     accepted = {f.name for f in dataclasses.fields(RunSpec)}
     spec = RunSpec(
-        scenario=Scenario(robot=ROBOT, start_time=START_TIME_S, duration=origin_offset_s + duration,
+        scenario=Scenario(robot=world[0], start_time=START_TIME_S, duration=origin_offset_s + duration,
                           shutdown_at=None if shutdown_at is None else origin_offset_s + shutdown_at),
-        nodes=(NodeSpec(script=probe.resolve(), args=tuple(args), flavour="ros2"),),
+        nodes=(NodeSpec(script=probe.resolve(), args=tuple(args), flavour="ros2"),
+               *(NodeSpec(script=node, flavour="ros2", provided=True) for node in world[1])),
         **{k: v for k, v in options.items() if k in accepted},
     )
     wall0 = time.monotonic()
