@@ -25,14 +25,17 @@ class NoiseStream:
     each call (making a new one costs about 60 µs, five times the draws of a sweep)."""
 
     def __init__(self, seed: int) -> None:
-        self._key = np.array([seed & _UINT64, 0], dtype=np.uint64)
         self._bits = np.random.Philox(key=seed & _UINT64)
         self._normal = np.random.Generator(self._bits).standard_normal
+        # The state set before each call, its counter's first word the time: one dict and two arrays, reused.
+        self._counter = np.zeros(4, dtype=np.uint64)
+        self._state = {"bit_generator": "Philox",
+                       "state": {"counter": self._counter, "key": np.array([seed & _UINT64, 0], dtype=np.uint64)},
+                       "buffer": np.zeros(4, dtype=np.uint64), "buffer_pos": 4, "has_uint32": 0, "uinteger": 0}
 
     def draws(self, t_ns: int, samples: int) -> np.ndarray:
-        self._bits.state = {"bit_generator": "Philox",
-                            "state": {"counter": np.array([t_ns, 0, 0, 0], dtype=np.uint64), "key": self._key},
-                            "buffer": np.zeros(4, dtype=np.uint64), "buffer_pos": 4, "has_uint32": 0, "uinteger": 0}
+        self._counter[0] = t_ns
+        self._bits.state = self._state
         return self._normal(samples)
 
 
@@ -128,10 +131,15 @@ class Scanner(_Sensor):
         angles = config.angle_min + self._increment * np.arange(config.samples)
         self._beams = np.stack((np.cos(angles), np.sin(angles), np.zeros_like(angles)))  # 3 x n, scanner frame
         self._mount = np.array(config.mount)
+        # Buffers a sweep reuses (a sweep is a dozen small numpy operations: allocating each result costs more
+        # than the arithmetic): the beams turned into the world (3 x n) and laid out beam after beam for the cast.
+        self._turned = np.empty((3, config.samples))
         self._directions = np.empty(3 * config.samples)
+        self._beam_rows = self._directions.reshape(config.samples, 3)
         self._dist = np.empty(config.samples)
         self._geom = np.empty(config.samples, dtype=np.int32)
-        self._hit = np.empty(config.samples, dtype=bool)
+        self._miss = np.empty(config.samples, dtype=bool)
+        self._beyond = np.empty(config.samples, dtype=bool)
         self._empty = (math.inf,) * config.samples
 
     def sample(self, t_ns: int, qpos: Sequence[float], qvel: Sequence[float]) -> ScanSample:
@@ -140,21 +148,26 @@ class Scanner(_Sensor):
         c = self._config
         ranges = self._empty
         if self._has_obstacles:
-            data, dist = self._data, self._dist
+            data, dist, miss, beyond = self._data, self._dist, self._miss, self._beyond
             rotation = data.xmat[self._body].reshape(3, 3)
             origin = data.xpos[self._body] + rotation @ self._mount
-            self._directions[:] = (rotation @ self._beams).T.ravel()
+            np.matmul(rotation, self._beams, out=self._turned)
+            np.copyto(self._beam_rows, self._turned.T)
             mujoco.mj_multiRay(self._model, data, origin, self._directions, _OBSTACLES_ONLY, 1, -1, self._geom,
                                dist, None, c.samples, c.range_max)
             # A beam starts at range_min (Gazebo's ray sensor) and reads inf when it hits nothing before range_max.
-            hit = self._hit
-            np.greater_equal(self._geom, 0, out=hit)
-            hit &= dist >= c.range_min
-            hit &= dist <= c.range_max
+            np.less(self._geom, 0, out=miss)
+            np.less(dist, c.range_min, out=beyond)
+            miss |= beyond
+            np.greater(dist, c.range_max, out=beyond)
+            miss |= beyond
             if c.noise_stddev:
-                dist += c.noise_stddev * self._noise.draws(t_ns, c.samples)
-                np.clip(dist, c.range_min, c.range_max, out=dist)
-            dist[~hit] = math.inf
+                noise_m = self._noise.draws(t_ns, c.samples)
+                np.multiply(noise_m, c.noise_stddev, out=noise_m)
+                dist += noise_m
+                # clip as min(max()): the same selection without np.clip's Python wrapper
+                np.minimum(np.maximum(dist, c.range_min, out=dist), c.range_max, out=dist)
+            np.copyto(dist, math.inf, where=miss)
             ranges = tuple(dist.tolist())
         return ScanSample(t_ns, c.topic, c.frame_id, c.angle_min, c.angle_max, self._increment, c.range_min,
                           c.range_max, ranges)
