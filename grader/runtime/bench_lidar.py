@@ -43,7 +43,10 @@ while not rospy.is_shutdown():
     cmd.linear.x = 0.1 if ahead[0] > 0.5 else 0.0
     cmd.angular.z = 0.3
     pub.publish(cmd)
-    rate.sleep()
+    try:
+        rate.sleep()
+    except rospy.ROSInterruptException:
+        break
 """
 RCLPY = NODE_CPU + """import rclpy
 from geometry_msgs.msg import TwistStamped
@@ -72,7 +75,10 @@ class Drive(Node):
 
 
 rclpy.init()
-rclpy.spin(Drive())
+try:
+    rclpy.spin(Drive())
+except KeyboardInterrupt:
+    pass
 """
 NODES = {"ros1": ROSPY, "ros2": RCLPY}
 SIM_SECONDS = 60.0  # per run: long enough that the node's start-up (imports) weighs little in the ratio
