@@ -94,10 +94,10 @@ def _ros2_run(process: dict[str, Any], rest: list[str], workspace: Workspace) ->
     if package in WORLD_PACKAGES or package in EXTERNAL_PACKAGES:
         return _node(process, package, executable, args, workspace)
     try:
-        found = workspace.executable(package, executable)
+        workspace.executable(package, executable)
     except WorkspaceError as exc:
         raise ExecError(f"`ros2 run` would print: {exc}") from None
-    return _node(process, package, executable, args, workspace, found.script.resolve())
+    return _node(process, package, executable, args, workspace)
 
 
 def _script(process: dict[str, Any], path: str, args: list[str], workspace: Workspace) -> dict[str, Any]:

@@ -19,7 +19,7 @@ from grader.launch.ros2_index import installed, not_installed
 from grader.launch.specs import MAX_NODES
 from grader.provided_nodes import companions, launched_script, provided_spec
 from grader.rubric import GRADER_NODES
-from grader.runtime.client_library import ROS2, client_library, entry_point, import_roots
+from grader.runtime.client_library import ROS2, EntryPoint, client_library, entry_point, import_roots
 from grader.runtime.spec import NodeSpec, Start, file_arg
 from grader.workspace import WorkspaceError
 from grader.workspace.model import Workspace
@@ -58,12 +58,22 @@ def _start(process: dict[str, Any], started: dict[str, tuple[int, float]]) -> tu
     return Start(delay_s=delay), f"starts when {trigger} {verb}; rosgrade starts it at {delay:g} s"
 
 
-def _student_script(process: dict[str, Any], workspace: Workspace, file: Path) -> Path:
-    """The script of the submission's executable the node runs; LaunchError when the package does not have it."""
+def _student_node(process: dict[str, Any], workspace: Workspace, file: Path) -> tuple[Path, EntryPoint | None]:
+    """The script of the submission the node runs and the console_scripts entry point that runs it: the one of the
+    executable launch names (several may share a module), none for a script run by its path (a file, as python runs
+    it); LaunchError when the package does not have the executable."""
+    if "script" in process:
+        return Path(process["script"]), None
     try:
-        return workspace.executable(process["package"], process["executable"]).script.resolve()
+        found = workspace.executable(process["package"], process["executable"])
     except WorkspaceError as exc:
         raise LaunchError(f"{file.name}: {exc}") from None
+    script = found.script.resolve()
+    entry = entry_point(script, workspace)
+    if entry is None or found.entry is None:
+        return script, entry
+    module, _, function = found.entry.partition(":")
+    return script, replace(entry, executable=found.name, module=module, function=function)
 
 
 def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
@@ -111,8 +121,8 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
             findings.append(f"{file.name} starts {label}, which rosgrade does not run (not part of the graded "
                             "simulation).")
             continue
-        script = GRADER_NODES / shipped if shipped is not None else Path(process["script"]) if "script" in process \
-            else _student_script(process, workspace, file)
+        script, entry = (GRADER_NODES / shipped, None) if shipped is not None \
+            else _student_node(process, workspace, file)
         if (process.get("after") or {}).get("event") == "shutdown":
             findings.append(f"{file.name}: {label} starts when launch shuts down (OnShutdown); rosgrade does not run "
                             "it, as launch starts nothing once it is shutting down.")
@@ -130,8 +140,7 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
             continue
         flavour = client_library(script, workspace)
         specs.append(NodeSpec(script=script, args=argv, stdin=stdin, flavour=flavour,
-                              entry=entry_point(script, workspace), import_roots=import_roots(script, workspace,
-                                                                                              flavour),
+                              entry=entry, import_roots=import_roots(script, workspace, flavour),
                               files=files, output=output, start=start))
     specs += [provided_spec(script, workspace) for script in companions([s.script.name for s in specs if s.provided])]
     if len(specs) > MAX_NODES:

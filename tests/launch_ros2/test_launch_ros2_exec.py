@@ -25,6 +25,7 @@ from launch import LaunchDescription
 from launch.actions import ExecuteProcess, RegisterEventHandler, TimerAction
 from launch.event_handlers import OnProcessExit
 from launch_ros.actions import Node
+from launch_ros.substitutions import ExecutableInPackage
 
 
 def generate_launch_description():
@@ -43,6 +44,7 @@ def generate_launch_description():
         ExecuteProcess(cmd=['python3', '-m', 'part2_navigation.move_square']),
         ExecuteProcess(cmd=['rviz2']),
         ExecuteProcess(cmd=['sleep', '2']),
+        ExecuteProcess(cmd=[ExecutableInPackage('move_circle', 'part2_navigation'), 'slow']),
     ])
 '''
 
@@ -65,16 +67,19 @@ def evaluated(tmp_path_factory: pytest.TempPathFactory):
 @pytest.mark.slow  # one confined evaluation of the launch file, about 0.5 s
 def test_ros2_run_and_scripts_start_the_submissions_nodes_with_ros2_runs_argv(evaluated) -> None:
     specs, _, _ = evaluated
-    assert [spec.script.name for spec in specs] == ["odom_subscriber.py", "turtle_teleop_key_ros2.py",
+    assert [spec.script.name for spec in specs] == ["odom_subscriber.py", "turtle_teleop_key_ros2.py", "move_circle.py",
                                                     "move_square.py", "move_circle.py", "turtlesim_rotate_absolute.py"]
-    printer, teleop, square, circle, _ = specs
+    printer, teleop, installed, square, circle, _ = specs
+    assert installed.args == ("slow",) and installed.entry is not None  # the installed executable's path
+    assert printer.entry is None and circle.entry is None  # scripts run by their path run as files
     assert square.args[:7] == ("fast", "--ros-args", "-r", "__node:=mover", "-p", "side:=1.5", "--params-file")
     assert square.files == (("launch_params_1.yaml", b"/**:\n  ros__parameters:\n    side: 2.0\n"),)
     assert square.entry is not None and square.entry.function == "main"
     assert printer.args == ("--verbose",)
     assert teleop.stdin == "\x1b[A" and teleop.provided
     assert square.start == Start(delay_s=2.0, said="2 s after the start (TimerAction)")
-    assert circle.start == Start(delay_s=0.0, after=2, on="exit", said="when ros2-10 exits")  # launch numbers processes as they start
+    # launch names each process by its order of start: the ros2 run of move_square is its eleventh
+    assert circle.start == Start(delay_s=0.0, after=3, on="exit", said="when ros2-11 exits")
 
 
 @pytest.mark.slow
