@@ -35,6 +35,10 @@ class Case:
     # The real library itself can hang in this probe (a race of its own): a real run the harness had to kill is then
     # no reference, and if every real run hung the comparison is skipped, saying so.
     real_may_hang: str = ""
+    # The world the probe runs in: "" the TurtleBot (real_robot2.py), "turtlesim" Jazzy's turtlesim
+    # (real_turtlesim2.py); `beside`: grader-provided nodes rosgrade runs with it (real turtlesim serves them itself).
+    world: str = ""
+    beside: tuple[str, ...] = ()
 
     @property
     def path(self) -> Path:
@@ -369,4 +373,60 @@ CASES = [
         "set",
         "end",
     ), stderr_empty=True),
+]
+
+
+# Jazzy's turtlesim (issue 30), measured against real_turtlesim2.py (a real-rclpy model of turtle.cpp and
+# turtle_frame.cpp, ros_tutorials 1.8.2) on the interfaces built with build_turtlesim_interfaces.sh. Each probe resets
+# the world first. Levels on /rosout are rcl_interfaces/msg/Log's (20 INFO, 30 WARN, 40 ERROR).
+TURTLE_CASES = [
+    Case("p21_turtle_motion", "p21_turtle_motion.py", duration=8.0, world="turtlesim", stdout=(
+        "start x 5.544445 y 5.544445 theta 0.000000",
+        "speeds reported [0.0, 1.0]",
+        "stopped after the last command (s) 1.0",
+        "distance 1.9 y moved False theta 0.000000",
+        "at the wall x 11.088889 y 5.544445",
+        "wall warnings more than 3 True",
+        "first warning Oh no! I hit the wall! (Clamping from [x=<x>, y=5.544445])",
+        "warning x beyond the canvas True",
+        "end",
+    ), stderr_empty=True),
+    Case("p22_turtle_services", "p22_turtle_services.py", duration=8.0, world="turtlesim", stdout=(
+        "reset first -> std_srvs.srv.Empty_Response()",
+        "spawn '' -> turtlesim.srv.Spawn_Response(name='turtle2')",
+        "spawn 'leo' -> turtlesim.srv.Spawn_Response(name='leo')",
+        # rclcpp ignores a service callback's `return false`: the caller gets the empty response, the error is logged.
+        "spawn 'leo' again -> turtlesim.srv.Spawn_Response(name='')",
+        "kill 'nobody' -> turtlesim.srv.Kill_Response()",
+        "kill 'leo' -> turtlesim.srv.Kill_Response()",
+        "set_pen off -> turtlesim.srv.SetPen_Response()",
+        "after teleport_absolute x 2.0000 y 3.0000 theta 1.0000",
+        "after teleport_relative x 2.0707 y 3.9975 theta 1.5000",
+        "after teleport off the canvas x 11.0889 y 0.0000 theta 0.0000",
+        "after reset x 5.5444 y 5.5444 theta 0.0000",
+        "spawn '' after reset -> turtlesim.srv.Spawn_Response(name='turtle2')",
+        "turtlesim said 40 A turtle named [leo] already exists",
+        "turtlesim said 40 Tried to kill turtle [nobody], which does not exist",
+        "turtlesim said 30 Oh no! I hit the wall! (Clamping from [x=20.000000, y=14.088889])",
+        "turtlesim said 20 Clearing turtlesim.",
+        "turtlesim said 20 Resetting turtlesim.",
+        "turtlesim said 20 Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]",
+        "end",
+    ), stderr_empty=True),
+    # rosgrade runs the action as a grader node beside the world (grader/nodes/turtlesim_rotate_absolute.py): its
+    # own log lines are in the run's output, where real turtlesim's are in turtlesim's, and rosgrade does not
+    # deliver one node's /rosout to another: both are dropped from the comparison (the 'logged' lines are in the
+    # recorded real outputs, turtlesim_real_outputs.md).
+    Case("p23_turtle_action", "p23_turtle_action.py", duration=14.0, world="turtlesim",
+         beside=("turtlesim_rotate_absolute.py",), stdout=(
+             "accepted True",
+             "to 1.0: SUCCEEDED delta -1.0 heading 1.0",
+             "feedback first 1.0 last below 0.02 True more than 30 True decreasing True",
+             "to -1.0, replaced: ABORTED delta 0.3 heading 0.7",
+             "then to 0.0: SUCCEEDED delta 0.7 heading 0.0",
+             "cancel return_code 0 goals canceling 1",
+             "to 2.0, cancelled: CANCELED delta -0.3 heading 0.3",
+             "to -2.0, cmd_vel sent: ABORTED delta 0.3 heading 0.0",
+             "end",
+         ), volatile=(r"^\[(INFO|WARN)\] \[<wall>\] \[turtlesim_rotate_absolute\]: ", r"^logged ")),
 ]

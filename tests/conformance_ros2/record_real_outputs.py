@@ -1,7 +1,9 @@
 """Write what every ROS 2 probe prints under real rclpy, normalised, as Markdown: the target for rosgrade's rclpy.
 
-Usage: python tests/conformance_ros2/record_real_outputs.py OUT.md [RUNS]. Each probe runs RUNS times (default 2)
-beside one real robot; the first run is shown, and any line a later run printed differently is listed under it.
+Usage: python tests/conformance_ros2/record_real_outputs.py OUT.md [RUNS] [TURTLESIM_INTERFACES]. Each probe runs
+RUNS times (default 2) beside one real robot; the first run is shown, and any line a later run printed differently is
+listed under it. With TURTLESIM_INTERFACES (the install folder build_turtlesim_interfaces.sh made; nothing is built
+or fetched here), the turtlesim probes run instead, beside real_turtlesim2.py.
 """
 from __future__ import annotations
 
@@ -9,8 +11,10 @@ import sys
 from pathlib import Path
 
 from conformance_compare2 import diff_lines, normalise, summarise_commands
-from probe_cases2 import CASES, Case
+from probe_cases2 import CASES, TURTLE_CASES, Case
 from real_ros2 import RealRos2, RealResult
+
+TURTLESIM_MODEL = Path(__file__).resolve().parent / "real_turtlesim2.py"
 
 
 def _facts(case: Case, result: RealResult) -> dict[str, list[str]]:
@@ -39,19 +43,22 @@ def _section(case: Case, results: list[RealResult]) -> str:
     return "\n".join(out + ["```", ""])
 
 
-def main(path: Path, runs: int) -> None:
+def main(path: Path, runs: int, interfaces: Path | None = None) -> None:
     sections = []
-    with RealRos2() as ros:
-        for case in CASES:
+    cases, beside = (CASES, "real_robot2.py") if interfaces is None else (TURTLE_CASES, "real_turtlesim2.py")
+    side = RealRos2() if interfaces is None else RealRos2(robot_node=TURTLESIM_MODEL, interfaces=interfaces)
+    with side as ros:
+        for case in cases:
             results = [ros.run_probe(case.path, case.args, shutdown_at=case.shutdown_at, duration=case.duration)
                        for _ in range(runs)]
             sections.append(_section(case, results))
     head = ("# ROS 2 probes under real rclpy (measured)\n\nWritten by tests/conformance_ros2/record_real_outputs.py: "
-            "Jazzy's real rclpy 7.1.6 (PyPI's ros-jazzy-* wheels, Fast DDS) beside real_robot2.py at 1x, "
+            f"Jazzy's real rclpy 7.1.6 (PyPI's ros-jazzy-* wheels, Fast DDS) beside {beside} at 1x, "
             "each probe run "
             f"{runs} times; outputs normalised as the suite compares them.\n\n")
     path.write_text(head + "\n".join(sections), encoding="utf-8")
 
 
 if __name__ == "__main__":
-    main(Path(sys.argv[1]), int(sys.argv[2]) if len(sys.argv) > 2 else 2)
+    main(Path(sys.argv[1]), int(sys.argv[2]) if len(sys.argv) > 2 else 2,
+         Path(sys.argv[3]) if len(sys.argv) > 3 else None)
