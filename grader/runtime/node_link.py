@@ -238,14 +238,20 @@ class NodeLink:
             now = time.monotonic()
             if now >= check_at or now >= self._deadline:
                 check_at = now + self._check_every_s
-                why = self._over_limit() if self._over_limit is not None else None
-                if why:
-                    raise NodeOverLimit(why)
-                self._credit_queued_time()
-            if now >= self._deadline:
-                if self._pending:
-                    raise NodeSilent(f"did not read the grader's messages for {self._silent_wall_s:g} s of wall time")
-                raise NodeSilent(f"did not yield to the grader for {self._silent_wall_s:g} s of wall time")
+                self._check_in()
+
+    def _check_in(self) -> None:
+        """Stop the node if it is over a limit, or if it is past the watchdog's deadline once its run-queue wait is
+        credited (checked while waiting to read, and between frames: a node that sends frames without end, GRAPH
+        after GRAPH, never leaves a read waiting)."""
+        why = self._over_limit() if self._over_limit is not None else None
+        if why:
+            raise NodeOverLimit(why)
+        self._credit_queued_time()
+        if time.monotonic() >= self._deadline:
+            if self._pending:
+                raise NodeSilent(f"did not read the grader's messages for {self._silent_wall_s:g} s of wall time")
+            raise NodeSilent(f"did not yield to the grader for {self._silent_wall_s:g} s of wall time")
 
     def _credit_queued_time(self) -> None:
         """Move the watchdog on by the time the node spent runnable but waiting for a CPU since the last check: on a
@@ -296,6 +302,8 @@ class NodeLink:
         told = acted = False
         while True:
             kind, payload = self._read()
+            if time.monotonic() >= self._deadline:
+                self._check_in()
             if kind == ch.MOMENT:
                 if inert is None or acted:
                     raise ProtocolViolation("MOMENT outside a batch of moments, or after the node acted in it")

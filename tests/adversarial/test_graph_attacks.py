@@ -1,6 +1,6 @@
 """Hostile graph queries: a node asking the graph without end while another holds hundreds of publishers, and a
 forged GRAPH frame. Each ends in a plain verdict in bounded time; the asking costs the node sim time, the grader
-one encoding per asker and time."""
+a comparison and a send per ask, and a node that never stops sending is stopped when its silence runs out."""
 from __future__ import annotations
 
 import sys
@@ -30,8 +30,8 @@ def _no_leftovers():
 
 
 def test_a_node_asking_the_graph_in_a_busy_loop_runs_out_its_sim_time_and_no_more(tmp_path):
-    nodes = tuple(NodeSpec(script=CORPUS / name, flavour="ros2")
-                  for name in ("graph_endpoint_holder.py", "graph_query_flood.py"))
+    nodes = tuple(NodeSpec(script=CORPUS / f"{name}.py", flavour="ros2")
+                  for name in ("graph_endpoint_holder", "graph_query_flood"))
     started = time.monotonic()
     result = run(RunSpec(scenario=Scenario(duration=2.0), nodes=nodes, limits=LIMITS), tmp_path / "run.mcap",
                  tmp_path / "run.log")
@@ -44,10 +44,22 @@ def test_a_node_asking_the_graph_in_a_busy_loop_runs_out_its_sim_time_and_no_mor
     assert wall < LIMITS.wall_s
 
 
+def _run_one(name: str, tmp: Path):
+    return run(RunSpec(scenario=Scenario(duration=2.0), limits=LIMITS,
+                       nodes=(NodeSpec(script=CORPUS / f"{name}.py", flavour="ros1"),)), tmp / "run.mcap", tmp / "run.log")
+
+
 def test_a_graph_query_with_a_payload_is_a_protocol_violation(tmp_path):
-    result = run(RunSpec(scenario=Scenario(duration=2.0), limits=LIMITS,
-                         nodes=(NodeSpec(script=CORPUS / "graph_query_payload.py", flavour="ros1"),)),
-                 tmp_path / "run.mcap", tmp_path / "run.log")
+    result = _run_one("graph_query_payload", tmp_path)
     assert result.nodes[0].status == "protocol_violation"
     assert result.nodes[0].message == ("the node broke the grader's channel: GRAPH carries 1000 bytes; it asks with "
                                        "none")
+
+
+def test_raw_graph_frames_without_end_are_stopped_when_the_silence_limit_runs_out(tmp_path):
+    # past the node library: no sim time charged and no WAIT, only frames; the watchdog is checked between frames too
+    started = time.monotonic()
+    result = _run_one("graph_raw_flood", tmp_path)
+    assert result.nodes[0].status == "timeout"
+    assert "did not yield to the grader for 3 s of wall time" in result.nodes[0].message
+    assert time.monotonic() - started < LIMITS.silent_wall_s + 4
