@@ -11,7 +11,7 @@ from typing import Any
 import yaml
 from pydantic import ValidationError
 
-from grader.launch.ros2_turtlesim import is_world
+from grader.launch.turtlesim import is_world
 from grader.nodelib.common.rosgrade_param_files import ParamFileError, ParamSet
 from sim.scenario import ActionGoalSpec, ParamSetSpec, PublicationSpec, Scenario, ServiceCallSpec
 

@@ -9,7 +9,7 @@ from typing import Any
 from grader.launch.ros2_eval import Evaluation, Ros2LaunchError, evaluate
 from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_index import installed, not_installed, workspace_for
-from grader.launch.ros2_turtlesim import is_world
+from grader.launch.turtlesim import is_world
 from grader.provided_nodes import launched_script
 from grader.runtime.client_library import ROS2
 from grader.workspace import WorkspaceError, read_workspace

@@ -17,6 +17,7 @@ from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_eval import Ros2LaunchError, evaluate
 from grader.launch.ros2_index import installed, not_installed
 from grader.launch.specs import MAX_NODES
+from grader.launch.turtlesim import is_world
 from grader.provided_nodes import companions, launched_script, provided_spec
 from grader.rubric import GRADER_NODES
 from grader.runtime.client_library import ROS2, EntryPoint, client_library, entry_point, import_roots
@@ -105,10 +106,11 @@ def ros2_node_specs(file: Path, workspace: Workspace, args: dict[str, str],
     findings += exec_findings + act_findings
     turtlesim = ros2_turtlesim.world(processes, file.name)
     findings += ros2_turtlesim.finding(turtlesim, file.name)
+    acts = ros2_turtlesim.bridged_acts(acts, turtlesim)
     specs: list[NodeSpec] = []
     started: dict[str, tuple[int, float]] = {}  # launch's name of each node the run starts -> (index, delay)
     for index, process in enumerate(processes):
-        if index in handled or ros2_turtlesim.is_world(process) or process["kind"] == "not_run":
+        if index in handled or is_world(process) or process["kind"] == "not_run":
             continue
         if process["kind"] != "node":
             findings.append(f"{file.name} starts `{' '.join(process['cmd'])}`: rosgrade runs the nodes of a launch "

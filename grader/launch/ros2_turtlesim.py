@@ -6,7 +6,9 @@ its names, every other node gets remap rules that bridge the two, as the ROS 1 l
 (``grader.launch.turtlesim``): the name the launched turtlesim would use (``/turtlesim1/turtle1/cmd_vel``) leads to the
 world's, and the world's own name, which nothing would serve under ``ros2 launch``, to an unserved one, so a node in
 another namespace reaches no turtle. rcl applies the first rule that matches a name, so a node's own rule whose target
-is one of these names is rewritten to where the bridge leads. One world serves one turtlesim_node: a launch file that
+is one of these names is rewritten to where the bridge leads. The launch file's own ``ros2`` command lines, which the
+grader carries out (``ros2 service call /turtlesim1/spawn``, ``ros2 param set /turtlesim1/sim background_r 120``),
+reach the world the same way. One world serves one turtlesim_node: a launch file that
 starts two (the launch tutorial's turtlesim_mimic_launch.py) is refused with what to change.
 """
 from __future__ import annotations
@@ -15,13 +17,15 @@ from dataclasses import dataclass
 from typing import Any
 
 from grader.launch import names
+from grader.launch.ros2_acts import LaunchActs
 from grader.launch.model import LaunchError
-from grader.launch.turtlesim import PACKAGE, UNSERVED, WORLD_NAMES, WORLD_NODE
+from grader.launch.turtlesim import UNSERVED, WORLD_NAMES, is_world
 
 ACTION = "turtle1/rotate_absolute"  # Jazzy's turtle1 action; rosgrade's nodes remap its five parts one by one
 ACTION_PARTS = ("_action/send_goal", "_action/cancel_goal", "_action/get_result", "_action/feedback",
                 "_action/status")
-ROS2_WORLD_NAMES = (*WORLD_NAMES, *(f"{ACTION}/{part}" for part in ACTION_PARTS))
+ROS2_WORLD_NAMES = (*WORLD_NAMES, ACTION, *(f"{ACTION}/{part}" for part in ACTION_PARTS))
+WORLD_NODE_NAME = "/turtlesim"  # the world's node: its parameters and parameter services live under it
 _REMAP_FLAGS = ("-r", "--remap")
 
 
@@ -33,15 +37,11 @@ class Ros2Turtlesim:
     launched: dict[str, str]  # world name (/turtle1/cmd_vel) -> the launched node's (/turtlesim1/turtle1/cmd_vel)
 
 
-def is_world(process: dict[str, Any]) -> bool:
-    """Whether the process is turtlesim's turtlesim_node (the world, not a process rosgrade starts)."""
-    return process.get("kind") == "node" and process.get("package") == PACKAGE and process.get("executable") == WORLD_NODE
-
-
 def _identity(process: dict[str, Any]) -> tuple[str, str]:
     """The node's name and namespace as launch starts it (the executable's own node name when launch gives none)."""
     namespace = names.canonical(process.get("namespace") or "") or "/"
-    return process.get("node_name") or process["executable"], namespace if namespace.startswith("/") else "/" + namespace
+    namespace = namespace if namespace.startswith("/") else "/" + namespace
+    return process.get("node_name") or process["executable"], namespace
 
 
 def _full_name(process: dict[str, Any]) -> str:
@@ -118,3 +118,19 @@ def finding(turtlesim: Ros2Turtlesim | None, file_name: str) -> list[str]:
                       if w in turtlesim.launched)
     return [f"{file_name} starts turtlesim_node as {_full_name(turtlesim.process)}, so its turtle uses "
             f"{moved or 'other service names'}, as with ros2 launch; turtlesim's usual names reach no turtle."]
+
+
+def bridged_acts(acts: LaunchActs, turtlesim: Ros2Turtlesim | None) -> LaunchActs:
+    """The launch file's ros2 command lines with the launched turtlesim's names led to the world's (its node name to
+    the world's node, for ``ros2 param set``)."""
+    if turtlesim is None or not turtlesim.launched:
+        return acts
+    leads = {launched: world_name for world_name, launched in turtlesim.launched.items()}
+    node = _full_name(turtlesim.process)
+    return LaunchActs(
+        service_calls=[c.model_copy(update={"service": leads.get(c.service, c.service)}) for c in acts.service_calls],
+        param_sets=[p.model_copy(update={"node": WORLD_NODE_NAME if p.node == node else p.node})
+                    for p in acts.param_sets],
+        publications=[p.model_copy(update={"topic": leads.get(p.topic, p.topic)}) for p in acts.publications],
+        action_goals=[g.model_copy(update={"action": leads.get(g.action, g.action)}) for g in acts.action_goals],
+        world_params=acts.world_params)

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from grader.launch import names
 from grader.launch.model import Launch, LaunchError, LaunchNode
@@ -35,6 +36,12 @@ class TurtlesimNode:
 
     node: LaunchNode
     launched: dict[str, str]  # world name (/turtle1/cmd_vel) -> the launched node's name for it (/sim/turtle1/cmd_vel)
+
+
+def is_world(process: dict[str, Any]) -> bool:
+    """Whether a ROS 2 launch file's process is turtlesim_node (the world, not a process rosgrade starts)."""
+    return (process.get("kind") == "node" and process.get("package") == PACKAGE
+            and process.get("executable") == WORLD_NODE)
 
 
 def resolve(node: LaunchNode, name: str) -> str:

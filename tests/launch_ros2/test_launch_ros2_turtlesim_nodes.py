@@ -1,7 +1,7 @@
 """turtlesim's own nodes in a ROS 2 launch file: turtle_teleop_key and mimic run as the grader's shipped ROS 2 nodes
 (the teleop with the rotate_absolute server) with the launch description's name, namespace, remappings and stdin; a
 turtlesim_node in a namespace is bridged to the one world, so a node beside it reaches the turtle and a node elsewhere
-does not; two turtlesim_node are refused with what to change."""
+does not, and the launch file's ros2 command lines reach it; two turtlesim_node are refused with what to change."""
 from __future__ import annotations
 
 import shutil
@@ -21,6 +21,7 @@ ROOT = Path(__file__).resolve().parents[2]
 REFERENCE = ROOT / "reference_solutions_turtlesim_ros2" / "lab2_turtlesim"
 HEADER = """
 from launch import LaunchDescription
+from launch.actions import ExecuteProcess
 from launch_ros.actions import Node
 
 
@@ -136,3 +137,21 @@ def test_the_teleops_parameters_are_its_own_not_the_worlds(tmp_path: Path) -> No
     teleop = specs[0]
     assert teleop.script.name == "turtle_teleop_key_ros2.py"
     assert [content for _, content in teleop.files] == [b"/**:\n  ros__parameters:\n    scale_linear: 1.0\n"]
+
+
+def test_the_launch_files_ros2_commands_reach_a_namespaced_turtlesim(tmp_path: Path) -> None:
+    _, _, acts = _specs(tmp_path, """
+        Node(package='turtlesim', namespace='turtlesim1', executable='turtlesim_node', name='sim'),
+        Node(package='lab2_turtlesim', executable='pubvel', namespace='turtlesim1'),
+        ExecuteProcess(cmd=['ros2 service call /turtlesim1/spawn turtlesim/srv/Spawn "{x: 2, y: 2, name: t2}"'],
+                       shell=True),
+        ExecuteProcess(cmd=['ros2', 'param', 'set', '/turtlesim1/sim', 'background_r', '120']),
+        ExecuteProcess(cmd=['ros2', 'topic', 'pub', '-t', '1', '/turtlesim1/turtle1/cmd_vel',
+                            'geometry_msgs/msg/Twist', '{linear: {x: 1.0}}']),
+        ExecuteProcess(cmd=['ros2', 'action', 'send_goal', '/turtlesim1/turtle1/rotate_absolute',
+                            'turtlesim/action/RotateAbsolute', '{theta: 1.0}']),
+        ExecuteProcess(cmd=['ros2', 'service', 'call', '/other/spawn', 'turtlesim/srv/Spawn', '{name: t3}']),""")
+    assert [c.service for c in acts.service_calls] == ["/spawn", "/other/spawn"]
+    assert [(p.node, p.name, p.value) for p in acts.param_sets] == [("/turtlesim", "background_r", 120)]
+    assert [p.topic for p in acts.publications] == ["/turtle1/cmd_vel"]
+    assert [g.action for g in acts.action_goals] == ["/turtle1/rotate_absolute"]
