@@ -12,8 +12,10 @@ import resource
 import statistics
 import tempfile
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
+
+from grader import timing
 
 from grader.recording import Recording
 from grader.runtime.session import run
@@ -81,7 +83,11 @@ except KeyboardInterrupt:
     pass
 """
 NODES = {"ros1": ROSPY, "ros2": RCLPY}
+# The grader's stages (grader.timing) a scan goes through: the sweep, its bytes recorded, its delivery to the node.
+SCAN_PATH_STAGES = ("physics and sensors", "world messages (encode, record, queue)",
+                    "node steps (channel, node publications)")
 SIM_SECONDS = 60.0  # per run: long enough that the node's start-up (imports) weighs little in the ratio
+WARM_UP_SIM_SECONDS = 2.0
 
 
 class LidarBenchError(Exception):
@@ -90,11 +96,12 @@ class LidarBenchError(Exception):
 
 @dataclass(frozen=True)
 class Sample:
-    """One run's wall seconds and CPU seconds, the grader's and the node's."""
+    """One run's wall seconds and CPU seconds, the grader's and the node's, and the grader's stage seconds (wall)."""
 
     wall_s: float
     grader_cpu_s: float
     node_cpu_s: float
+    stages: dict[str, float] = field(default_factory=dict)
 
     @property
     def cpu_s(self) -> float:
@@ -118,15 +125,18 @@ def _node_cpu_s(recording: Path) -> float:
 def time_run(script: Path, flavour: str, sim_seconds: float, out: Path) -> Sample:
     """One run of ``script`` for ``sim_seconds`` in the arena, stopped with Ctrl+C at the end."""
     scenario = Scenario(world="arena", start="south", duration=sim_seconds + 1.0, shutdown_at=sim_seconds)
-    started, cpu = time.perf_counter(), _own_cpu_s()
-    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=script, flavour=flavour),)), out / "b.mcap", out / "b.log")
-    wall, grader_cpu = time.perf_counter() - started, _own_cpu_s() - cpu
-    return Sample(wall, grader_cpu, _node_cpu_s(out / "b.mcap"))
+    with timing.collect() as stages:
+        started, cpu = time.perf_counter(), _own_cpu_s()
+        run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=script, flavour=flavour),)), out / "b.mcap",
+            out / "b.log")
+        wall, grader_cpu = time.perf_counter() - started, _own_cpu_s() - cpu
+    return Sample(wall, grader_cpu, _node_cpu_s(out / "b.mcap"), stages)
 
 
 def summarize(flavour: str, without: list[Sample], with_scan: list[Sample], sim_seconds: float) -> dict[str, float | str]:
     """Best and median CPU ms per sim-second of each, the ratios of medians and of bests, the spread of the
-    per-repeat ratios (each run with /scan over the run without it just before), and where the extra CPU goes."""
+    per-repeat ratios (each run with /scan over the run without it just before), and where the extra CPU goes: the
+    grader's and the node's, and the grader's stages a scan goes through (wall time, noisier on a loaded machine)."""
     per_sim_ms = 1000.0 / sim_seconds
     off, on = [s.cpu_s for s in without], [s.cpu_s for s in with_scan]
     pairs = sorted(b / a for a, b in zip(off, on))
@@ -144,6 +154,10 @@ def summarize(flavour: str, without: list[Sample], with_scan: list[Sample], sim_
         f"{flavour}_scan_node_extra_ms_per_sim_s": round(
             (statistics.median(s.node_cpu_s for s in with_scan)
              - statistics.median(s.node_cpu_s for s in without)) * per_sim_ms, 2),
+        **{f"{flavour}_scan_extra_ms_per_sim_s ({name})": round(
+            (statistics.median(s.stages.get(name, 0.0) for s in with_scan)
+             - statistics.median(s.stages.get(name, 0.0) for s in without)) * per_sim_ms, 2)
+           for name in SCAN_PATH_STAGES},
     }
 
 
@@ -158,6 +172,8 @@ def lidar_benchmark(sim_seconds: float = SIM_SECONDS, repeats: int = 3, flavours
             for scan in (False, True):
                 scripts[scan] = folder / f"drive_{flavour}_{'scan' if scan else 'blind'}.py"
                 scripts[scan].write_text(NODES[flavour].format(scan=scan))
+            for scan in (False, True):  # warm-up, not counted: the process's first run imports and compiles more
+                time_run(scripts[scan], flavour, WARM_UP_SIM_SECONDS, folder)
             samples: dict[bool, list[Sample]] = {False: [], True: []}
             for _ in range(max(1, repeats)):
                 for scan in (False, True):

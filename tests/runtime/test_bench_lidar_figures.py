@@ -9,8 +9,11 @@ from grader.runtime.bench_lidar import NODES, Sample, lidar_benchmark, summarize
 
 
 def test_summary_has_best_and_median_cpu_per_sim_second_ratios_spread_and_where_the_extra_goes():
-    without = [Sample(1.0, 0.50, 0.10), Sample(1.0, 0.40, 0.10), Sample(1.0, 0.60, 0.20)]
-    with_scan = [Sample(1.0, 0.60, 0.12), Sample(1.0, 0.70, 0.10), Sample(1.0, 0.45, 0.15)]
+    sweeps = "physics and sensors"
+    without = [Sample(1.0, 0.50, 0.10, {sweeps: 0.3}), Sample(1.0, 0.40, 0.10, {sweeps: 0.2}),
+               Sample(1.0, 0.60, 0.20, {sweeps: 0.4, "# runs": 1})]
+    with_scan = [Sample(1.0, 0.60, 0.12, {sweeps: 0.35}), Sample(1.0, 0.70, 0.10, {sweeps: 0.5}),
+                 Sample(1.0, 0.45, 0.15, {sweeps: 0.4})]
     figures = summarize("ros1", without, with_scan, 10.0)
     assert figures["ros1_without_scan_cpu_ms_per_sim_s_best"] == 50.0  # 0.5 CPU-s over 10 sim-s
     assert figures["ros1_without_scan_cpu_ms_per_sim_s_median"] == 60.0
@@ -20,6 +23,9 @@ def test_summary_has_best_and_median_cpu_per_sim_second_ratios_spread_and_where_
     assert figures["ros1_scan_ratio_spread"] == "0.750-1.600"  # 0.6/0.8, 0.72/0.6, 0.8/0.5
     assert figures["ros1_scan_grader_extra_ms_per_sim_s"] == 10.0  # medians 0.6 against 0.5
     assert figures["ros1_scan_node_extra_ms_per_sim_s"] == 2.0
+    assert figures["ros1_scan_extra_ms_per_sim_s (physics and sensors)"] == 10.0  # medians 0.4 against 0.3
+    assert figures["ros1_scan_extra_ms_per_sim_s (world messages (encode, record, queue))"] == 0.0  # not timed
+    assert not any("#" in name for name in figures)
 
 
 @pytest.mark.slow
