@@ -259,7 +259,8 @@ class TurtlesimWorld(ScenarioTimes):
                     WorldService("/spawn", "turtlesim/Spawn"), WorldService("/kill", "turtlesim/Kill")]
         if self.flavour == ROS2:  # the node's own parameter services, as every rclcpp node serves them
             declared += [WorldService(f"{NODE_NAME}/get_parameters", "rcl_interfaces/GetParameters"),
-                         WorldService(f"{NODE_NAME}/set_parameters", "rcl_interfaces/SetParameters")]
+                         WorldService(f"{NODE_NAME}/set_parameters", "rcl_interfaces/SetParameters"),
+                         WorldService(f"{NODE_NAME}/describe_parameters", "rcl_interfaces/DescribeParameters")]
         for turtle in self.turtles.values():
             declared += [WorldService(turtle.topic("set_pen"), "turtlesim/SetPen"),
                          WorldService(turtle.topic("teleport_absolute"), "turtlesim/TeleportAbsolute"),
@@ -456,6 +457,7 @@ class TurtlesimWorld(ScenarioTimes):
         if self.flavour == ROS2:
             handlers[f"{NODE_NAME}/get_parameters"] = self._get_parameters
             handlers[f"{NODE_NAME}/set_parameters"] = self._set_parameters
+            handlers[f"{NODE_NAME}/describe_parameters"] = self._describe_parameters
         for turtle in self.turtles.values():
             handlers[turtle.topic("set_pen")] = partial(self._set_pen, turtle)
             handlers[turtle.topic("teleport_absolute")] = partial(self._teleport, turtle, False)
@@ -502,6 +504,11 @@ class TurtlesimWorld(ScenarioTimes):
         """Jazzy's get_parameters: each named parameter's value (none when one is not declared)."""
         names = [str(name) for name in request["names"]]  # type: ignore[attr-defined]
         return ServiceResult(True, {"values": turtlesim_params.get_parameters(NODE_NAME, self._tree(), names)})
+
+    def _describe_parameters(self, request: Request) -> ServiceResult:
+        """Jazzy's describe_parameters (`ros2 param describe /turtlesim background_r`), measured by probe p24."""
+        names = [str(name) for name in request["names"]]  # type: ignore[attr-defined]
+        return ServiceResult(True, {"descriptors": turtlesim_params.describe_parameters(names)})
 
     def _set_parameters(self, request: Request) -> ServiceResult:
         """Jazzy's set_parameters, one parameter at a time; a new background colour shows at once (turtle_frame.cpp

@@ -429,4 +429,23 @@ TURTLE_CASES = [
              "to -2.0, cmd_vel sent: ABORTED delta 0.3 heading 0.0",
              "end",
          ), volatile=(r"^\[(INFO|WARN)\] \[<wall>\] \[turtlesim_rotate_absolute\]: ", r"^logged ")),
+    # The parameters `ros2 param set/get/describe` reach (reasons are rclcpp's words, which an rclpy model cannot
+    # give: the outcomes are compared; sim/turtlesim_params.py holds rclcpp's texts). The background's repaint is
+    # seen only in the picture, which no probe reads.
+    Case("p24_turtle_parameters", "p24_turtle_parameters.py", duration=8.0, world="turtlesim", stdout=(
+        "defaults [(2, 69, False), (2, 86, False), (2, 255, False), (1, 0, False)]",
+        "set background_r 300 -> [False]",
+        "set background_r -1 -> [False]",
+        "set background_r 255 -> [True]",
+        "set background_g 0 -> [True]",
+        "set background_b 1.5 -> [False]",
+        "set holonomic 1 -> [False]",
+        "now [(2, 255, False), (2, 0, False), (2, 255, False)]",
+        "describe background_r 2 'Red channel of the background color' False [(0, 255, 1)]",
+        "describe holonomic 1 'If true, then turtles will be holonomic' False []",
+        "holonomic off: moved sideways 0.00 m, x kept True",
+        "set holonomic True -> [True]",
+        "holonomic on: moved sideways 1.3..1.5 m, x kept True",
+        "end",
+    ), stderr_empty=True),
 ]
