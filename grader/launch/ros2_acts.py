@@ -4,6 +4,7 @@ the grader as the scenario's own acts at the time launch would run them: the gra
 node of its own. Other programs are not run."""
 from __future__ import annotations
 
+import os
 import shlex
 from dataclasses import dataclass, field
 from typing import Any
@@ -89,7 +90,7 @@ def _positional(words: list[str], flags_with_value: set[str]) -> tuple[list[str]
 def cli_act(process: dict[str, Any], t: float) -> Any | None:
     """The scenario act for one of the launch file's processes (None: not a ros2 command rosgrade carries out)."""
     words = _words(process)
-    if len(words) < 3 or words[0] != "ros2":
+    if len(words) < 3 or os.path.basename(words[0]) != "ros2":  # `ros2` or its path (FindExecutable(name='ros2'))
         return None
     verb = tuple(words[1:3])
     rest = words[3:]

@@ -10,8 +10,10 @@ UNIT_SUFFIXES = {"_mps": "m/s", "_radps": "rad/s", "_deg": "°", "_rad": "rad", 
 
 NOTICED_HEADING = "What rosgrade noticed while running your node"
 
+# "error": nothing could run (a launch file refused, a link out of the submission, a type the task needs) or the
+# grader could not finish a run; a node that crashes is graded (its criteria say what it did).
 _STATUS_TEXT = {
-    "error": "Your node stopped with an error, so this task could not be fully graded.",
+    "error": "This task could not be graded:",
     "timeout": "Your node did not finish within the time limit.",
     "not_found": "No script for this task was found in your submission.",
 }

@@ -116,7 +116,9 @@ def topic_summary(session: Session) -> list[str]:
     """What each node published and received, with counts (the same kind of line for every run)."""
     lines = []
     for node in session.nodes:
-        label = f"the grader's {node.outcome.script}" if node.spec.provided else node.outcome.script
+        if node.spec.provided:  # the grader's own node: its traffic is not the student's to read about
+            continue
+        label = node.outcome.script
         state = node.link.state
         lines += _capped([f"{label} published {_count(p.count, 'message')} on {p.topic} ({p.type})."
                           for p in state.publishers.values() if p.topic not in LIBRARY_TOPICS]

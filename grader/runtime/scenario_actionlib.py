@@ -11,7 +11,8 @@ from __future__ import annotations
 
 from grader.nodelib.common import rosgrade_channel as ch
 from grader.recording import RecordingError
-from grader.runtime.scenario_topics import CALLER_ID, PlannedPublication, PublicationError, build_message
+from grader.runtime.message_values import MessageValueError, build_message
+from grader.runtime.scenario_topics import CALLER_ID, PlannedPublication, PublicationError
 from grader.runtime.wire import Wire
 from sim.scenario import ActionGoalSpec
 
@@ -44,7 +45,7 @@ def planned_actionlib_goals(goals: list[ActionGoalSpec], wire: Wire) -> list[Pla
                                                                                          {}), goal=goal))
         except (RecordingError, KeyError) as exc:
             raise PublicationError(f"{where}: {spec.type} is not an action the run knows ({exc})") from None
-        except PublicationError as exc:
+        except MessageValueError as exc:
             raise PublicationError(f"{where}: {exc}") from None
         goal_bytes = _GoalBytes(wire, action_goal, goal, index + 1)
         planned.append(PlannedPublication(spec.t_ns, f"{spec.action}/goal", action_goal, b"", None, 1, False, True,

@@ -13,6 +13,7 @@ from grader.runtime.node_link import ServiceCall
 from grader.runtime.param_server import GRADER, ParamServer
 from grader.runtime.services import Caller, ServiceRouteError, ServiceRouter
 from grader.runtime.scenario_goals import GoalSender, PlannedGoal
+from grader.runtime.message_values import MessageValueError, build_message
 from grader.runtime.wire import Wire
 from sim.scenario import ParamSetSpec, ServiceCallSpec
 
@@ -43,9 +44,11 @@ def planned_calls(calls: list[ServiceCallSpec], wire: Wire, param_sets: list[Par
     planned = []
     for index, spec in enumerate(calls):
         try:
-            request = wire.part_bytes(spec.type, "Request", spec.request)
+            # as the service call CLIs fill a request: every field not given at its zero value
+            part = wire.service_part(spec.type, "Request")
+            request = wire.catalog.encode(part, build_message(wire, part, spec.request))
             md5sum = wire.catalog.service_md5sum(spec.type)
-        except (RecordingError, TypeError, ValueError) as exc:
+        except (RecordingError, MessageValueError, TypeError, ValueError) as exc:
             raise ServiceRouteError(f"scenario service_calls[{index}] to {spec.service}: {spec.request} is not a "
                                     f"request of {spec.type}: {exc}") from None
         planned.append(PlannedCall(spec.t_ns, ServiceCall(spec.service, spec.type, md5sum, False, request)))

@@ -11,14 +11,12 @@ What the commands do (rostopic 1.15.15, ros2cli Jazzy, read from their sources):
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
-import numpy as np
-from rosbags.typesys.base import Nodetype
-
 from grader.recording import RecordingError
+from grader.runtime.message_values import MessageValueError, build_message
 from grader.runtime.node_link import ROBOT, Endpoint, Latched
 from grader.runtime.wire import Wire
 from sim.scenario import PublicationSpec
@@ -27,9 +25,7 @@ CALLER_ID = "/rosgrade"
 ONCE_STAY_NS = 3_000_000_000  # rostopic pub -1 stays this long after publishing (its _ONCE_DELAY, 3 s)
 POLL_NS = 100_000_000  # ros2 topic pub checks for a matching subscription this often (DEFAULT_WAIT_TIME)
 KEEP_ALIVE_NS = 100_000_000  # ros2 topic pub stays this long after its last message (--keep-alive 0.1)
-_NUMERIC = {"bool": np.bool_, "byte": np.uint8, "char": np.uint8, "int8": np.int8, "uint8": np.uint8,
-            "int16": np.int16, "uint16": np.uint16, "int32": np.int32, "uint32": np.uint32, "int64": np.int64,
-            "uint64": np.uint64, "float32": np.float32, "float64": np.float64}
+
 
 
 class PublicationError(Exception):
@@ -47,77 +43,6 @@ class Graph(Protocol):
     def ready_ns(self, publisher: Endpoint) -> int: ...
 
     def drive(self, publisher: Endpoint, data: bytes, t: int) -> None: ...
-
-
-def build_message(wire: Wire, type_name: str, values: Mapping[str, object], where: str = "") -> object:
-    """A message of ``type_name`` from a YAML-like mapping, every field not given at its zero value, as
-    ``rostopic pub`` and ``ros2 topic pub`` fill one; PublicationError names the field that does not fit."""
-    store = wire.catalog.typestore
-    name = type_name if type_name in store.fielddefs else wire.catalog.message_class(type_name).__msgtype__
-    if not isinstance(values, Mapping):
-        raise PublicationError(f"{where or type_name}: expected a mapping of fields, got {values!r}")
-    fields = dict(store.fielddefs[name][1])
-    unknown = sorted(set(values) - set(fields))
-    if unknown:
-        raise PublicationError(f"{where or type_name}: {name} has no field {unknown[0]!r}; its fields are "
-                               f"{', '.join(fields) or 'none'}")
-    built = {field: _field(wire, desc, values.get(field), f"{where}.{field}" if where else field)
-             for field, desc in fields.items()}
-    return store.types[name](**built)
-
-
-def _field(wire: Wire, desc: tuple, value: object, where: str) -> object:
-    node, detail = desc
-    if node == Nodetype.NAME:
-        return build_message(wire, detail, {} if value is None else value, where)
-    if node == Nodetype.BASE:
-        return _base(detail[0], value, where)
-    (inner, inner_detail), count = detail
-    items = list(value) if isinstance(value, (list, tuple)) else [] if value is None else None
-    if items is None:
-        raise PublicationError(f"{where}: expected a list, got {value!r}")
-    if node == Nodetype.ARRAY and value is not None and len(items) != count:
-        raise PublicationError(f"{where}: expected {count} items, got {len(items)}")
-    if node == Nodetype.ARRAY and value is None:
-        items = [None] * count
-    if inner == Nodetype.NAME:
-        return [build_message(wire, inner_detail, {} if item is None else item, f"{where}[{i}]")
-                for i, item in enumerate(items)]
-    base = inner_detail[0]
-    converted = [_base(base, item, f"{where}[{i}]") for i, item in enumerate(items)]
-    return np.array(converted, dtype=_NUMERIC[base]) if base in _NUMERIC else converted
-
-
-def _base(base: str, value: object, where: str) -> object:
-    """One field of a built-in type, as YAML gives it: ints for integers, numbers for floats, text for strings."""
-    if base in ("string", "wstring"):
-        if value is None:
-            return ""
-        if not isinstance(value, str):
-            raise PublicationError(f"{where}: expected a string, got {value!r}")
-        return value
-    if base == "bool":
-        if value is None:
-            return False
-        if not isinstance(value, bool):
-            raise PublicationError(f"{where}: expected true or false, got {value!r}")
-        return value
-    if base in ("float32", "float64"):
-        if value is None:
-            return 0.0
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise PublicationError(f"{where}: expected a number, got {value!r}")
-        return float(value)
-    if base in _NUMERIC:
-        if value is None:
-            return 0
-        if isinstance(value, bool) or not isinstance(value, int):
-            raise PublicationError(f"{where}: expected an integer, got {value!r}")
-        info = np.iinfo(_NUMERIC[base])
-        if not info.min <= value <= info.max:
-            raise PublicationError(f"{where}: {value} does not fit a {base}")
-        return value
-    raise PublicationError(f"{where}: a {base} field cannot be given in a scenario")
 
 
 @dataclass(frozen=True)
@@ -153,7 +78,7 @@ def _planned(index: int, spec: PublicationSpec, wire: Wire, callerid: str) -> Pl
         data = wire.catalog.encode(type_name, build_message(wire, type_name, spec.values))
     except (RecordingError, KeyError) as exc:
         raise PublicationError(f"{where}: {spec.type} is not a message type the run knows ({exc})") from None
-    except PublicationError as exc:
+    except MessageValueError as exc:
         raise PublicationError(f"{where}: {exc}") from None
     if wire.name == "ros1":
         if spec.times is not None:

@@ -67,3 +67,11 @@ def test_acts_join_the_scenarios_own_in_time_order() -> None:
     merged = with_acts(scenario, acts)
     assert [c.t for c in merged.service_calls] == [1.0, 3.0]
     assert with_acts(scenario, LaunchActs()) is scenario
+
+
+def test_the_ros2_found_by_find_executable_is_the_ros2_cli() -> None:
+    """The substitutions tutorial writes [FindExecutable(name='ros2'), ' service call ', ...]: on a Jazzy machine that
+    is /opt/ros/jazzy/bin/ros2, and the grader carries the call out."""
+    act = cli_act(_process(["/opt/ros/jazzy/bin/ros2 service call /spawn turtlesim/srv/Spawn '{x: 2, y: 2}'"],
+                           shell=True), 0.0)
+    assert act == ServiceCallSpec(t=0.0, service="/spawn", type="turtlesim/srv/Spawn", request={"x": 2, "y": 2})

@@ -97,3 +97,16 @@ def test_topic_pub_on_a_turtles_cmd_vel_drives_it(tmp_path: Path, flavour: str, 
         tmp_path / "run.mcap", tmp_path / "run.log")
     poses = [m.x for _, m in Recording.open(tmp_path / "run.mcap").messages("/turtle1/pose")]
     assert poses[-1] - poses[0] > 2.0  # about 1 m/s while commands come each second (turtlesim holds one for 1 s)
+
+
+def test_a_service_call_fills_the_fields_it_does_not_give_as_the_cli_does() -> None:
+    """`ros2 service call /spawn turtlesim/srv/Spawn "{x: 2, y: 2, theta: 0.2}"` (the substitutions tutorial): the
+    name the request does not give is empty, as ros2 service call leaves it."""
+    from grader.runtime.scenario_calls import planned_calls
+    from sim.scenario import ServiceCallSpec
+
+    wire = wire_for("ros2")
+    [call] = planned_calls([ServiceCallSpec(t=0.0, service="/spawn", type="turtlesim/srv/Spawn",
+                                            request={"x": 2, "y": 2, "theta": 0.2})], wire)
+    request = wire.catalog.decode("turtlesim/srv/Spawn_Request", call.call.request)
+    assert (request.x, request.y, request.name) == (2.0, 2.0, "")

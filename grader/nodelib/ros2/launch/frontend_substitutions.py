@@ -40,7 +40,7 @@ def _make(name: str, args: list[list[Substitution]]) -> Substitution:
         "equals": lambda: (arity(2, 2), s.EqualsSubstitution(args[0], args[1]))[1],
         "not-equals": lambda: (arity(2, 2), s.NotSubstitution([s.EqualsSubstitution(args[0], args[1])]))[1],
         "command": lambda: s.Command(*args),
-        "find-exec": lambda: s.FindExecutable(*args),
+        "find-exec": lambda: (arity(1, 1), s.FindExecutable(name=args[0]))[1],
     }
     if name not in makers:
         raise SubstitutionSyntaxError(f"Unknown substitution: {name}")

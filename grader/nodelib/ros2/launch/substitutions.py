@@ -255,7 +255,21 @@ class Command(Substitution):
                                   "file's path or its content read in Python instead")
 
 
-class FindExecutable(_NotRun):
-    """The path of a program on PATH: none is found while rosgrade reads a launch file."""
+class FindExecutable(Substitution):
+    """The path ``which NAME`` gives on a ROS 2 Jazzy machine (the grading machine's PATH is not shown to a launch
+    file): ROS's programs under /opt/ros/jazzy/bin, the others under /usr/bin. The substitutions tutorial starts its
+    `ros2 service call` this way, and the grader carries that call out."""
 
-    what = "looks for a program on the machine's PATH, which rosgrade does not show to a launch file"
+    ROS_PROGRAMS = frozenset({"ros2", "rviz2", "rqt", "xacro", "gzserver", "gzclient"})
+
+    def __init__(self, *, name: Any) -> None:
+        self.name = normalize_to_list_of_substitutions(name)
+
+    def perform(self, context: LaunchContext) -> str:
+        name = perform_substitutions(context, self.name)
+        if not name or "/" in name:
+            raise SubstitutionFailure(f"executable '{name}' not found on the PATH")
+        return f"/opt/ros/jazzy/bin/{name}" if name in self.ROS_PROGRAMS else f"/usr/bin/{name}"
+
+    def describe(self) -> str:
+        return f"FindExec({' + '.join(s.describe() for s in self.name)})"
