@@ -72,7 +72,7 @@ class Turtle:
         self.ended: dict[bytes, tuple[threading.Event, RotateAbsolute.Result]] = {}  # by goal id
         self.place(0.0, 0.0, 0.0)
         node, group = sim.node, sim.group
-        self.endpoints = [
+        self.endpoints = [  # kept for the turtle's life and after (see the module docstring)
             node.create_subscription(Twist, f"{name}/cmd_vel", self.on_command, QOS),
             node.create_service(SetPen, f"{name}/set_pen", self.set_pen),
             node.create_service(TeleportAbsolute, f"{name}/teleport_absolute", self.teleport_absolute),
