@@ -134,3 +134,23 @@ def test_dds_type_names():
     from rclpy._graph import dds_type_name
     assert dds_type_name("geometry_msgs/msg/Twist") == "geometry_msgs::msg::dds_::Twist_"
     assert dds_type_name("std_srvs/srv/Empty_Request") == "std_srvs::srv::dds_::Empty_Request_"
+
+
+@pytest.mark.parametrize("callback, with_info", [
+    (lambda msg: None, False),
+    (lambda msg, name="scan": None, False),  # a loop's `lambda msg, n=name: ...`: the message alone, as rclpy 7.1
+    (lambda msg, info: None, True),
+    (lambda *args: None, False),
+])
+def test_a_subscription_callback_gets_the_message_info_only_when_one_argument_does_not_bind(callback,
+                                                                                        with_info: bool) -> None:
+    from rclpy.subscription import _wants_info
+
+    assert _wants_info(callback) is with_info
+
+
+def test_a_callback_that_takes_no_message_is_refused() -> None:
+    from rclpy.subscription import _wants_info
+
+    with pytest.raises(TypeError):
+        _wants_info(lambda: None)

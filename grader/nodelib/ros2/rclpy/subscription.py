@@ -34,13 +34,16 @@ def _world_mismatch(topic: str, qos_profile) -> QoSPolicyKind | None:
 
 
 def _wants_info(callback) -> bool:
-    """Whether the callback takes (msg, MessageInfo), as rclpy decides from its signature."""
+    """Whether the callback takes (msg, MessageInfo), as rclpy 7.1 decides: message only when its signature binds one
+    argument (so ``lambda msg, name=name: ...`` gets the message alone), else both; a callback that takes neither is
+    refused when the subscription is made (the TypeError of binding two)."""
+    signature = inspect.signature(callback)
     try:
-        params = [p for p in inspect.signature(callback).parameters.values()
-                  if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
-    except (TypeError, ValueError):
+        signature.bind(object())
         return False
-    return len(params) == 2
+    except TypeError:
+        signature.bind(object(), object())
+        return True
 
 
 class Subscription:
