@@ -55,6 +55,7 @@ class Register(_Frame):
     md5sum: TypeHash
     queue_size: LaxInt
     latch: bool
+    qos: list[Name] | None = None  # ROS 2: resolved [reliability, durability] offered or requested (rosgrade_qos)
 
 
 class Unregister(_Frame):

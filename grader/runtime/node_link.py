@@ -13,7 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from grader import timing
-from grader.nodelib.common import rosgrade_channel as ch
+from grader.nodelib.common import rosgrade_channel as ch, rosgrade_qos
 from grader.recording import MessageCatalog, RecordingError
 from grader.runtime import frames
 
@@ -49,6 +49,7 @@ class Endpoint:
     queue_size: int | None
     latch: bool
     registered_ns: int
+    qos: tuple[str, str] | None = None  # ROS 2: (reliability, durability) offered or requested; None: matches all
     count: int = 0
     closed: bool = False
     dropped_before_connect: int = 0
@@ -186,6 +187,18 @@ def _topic(value: str, what: str = "topic") -> str:
     if not value.startswith("/") or any(c.isspace() for c in value):
         raise ProtocolViolation(f"invalid {what} name {value[:80]!r}")
     return value
+
+
+def _qos(value: list[str] | None) -> tuple[str, str] | None:
+    """A registration's QoS as the routing matches it, or a violation naming what is not a resolved policy pair."""
+    if value is None:
+        return None
+    if len(value) != 2:
+        raise ProtocolViolation(f"qos lists {len(value)} policies; it takes [reliability, durability]")
+    try:
+        return rosgrade_qos.check(value[0], value[1])
+    except rosgrade_qos.QoSRuleError as exc:
+        raise ProtocolViolation(str(exc)) from None
 
 
 class NodeLink:
@@ -430,7 +443,8 @@ class NodeLink:
                                         "it was stopped")
         endpoint = Endpoint(ident=frame.id, topic=_topic(frame.topic), type=self._catalog.canonical(frame.type),
                             md5sum=frame.md5sum,
-                            queue_size=frame.queue_size, latch=frame.latch, registered_ns=t_ns)
+                            queue_size=frame.queue_size, latch=frame.latch, registered_ns=t_ns,
+                            qos=_qos(frame.qos))
         table[endpoint.ident] = endpoint
         st.graph_version += 1
         return endpoint if kind == ch.SUBSCRIBE else None

@@ -32,6 +32,7 @@ from grader.runtime.node_link import (ROBOT, Endpoint, EndpointLimitExceeded, Gr
                                       Publication, ServiceAnswer, ServiceCall, ServiceOffer, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
+from grader.runtime.qos_match import connects
 from grader.runtime.scenario_participant import ParticipantError, ScenarioParticipant, plan
 from grader.runtime.services import Caller, ServiceRouter
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
@@ -542,7 +543,7 @@ class Session:
             if other.alive and self.discovered(other, t):
                 found += [(index, sub.ident) for sub in other.link.state.subscribers.values()
                           if sub.topic == publisher.topic and sub.type == publisher.type and not sub.closed
-                          and t >= sub.registered_ns]
+                          and t >= sub.registered_ns and connects(publisher, sub)]
         return found
 
     def _publishers_of(self, node: _Node, subscriber: Endpoint, t: int) -> set:
@@ -553,7 +554,7 @@ class Session:
         for index, other in enumerate(self.nodes):
             if other.alive and any(pub.topic == subscriber.topic and pub.type == subscriber.type and not pub.closed
                                    and t >= max(self.ready_ns(pub), subscriber.registered_ns)
-                                   for pub in other.link.state.publishers.values()):
+                                   and connects(pub, subscriber) for pub in other.link.state.publishers.values()):
                 peers.add(index)
         return peers
 

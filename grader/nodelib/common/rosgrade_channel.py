@@ -10,7 +10,7 @@ import os
 import re
 import struct
 
-PROTOCOL = 9
+PROTOCOL = 10  # 10: a ROS 2 ADVERTISE/SUBSCRIBE carries "qos": [reliability, durability] (rosgrade_qos)
 
 CLOCK_PERIOD_NS = 10_000_000
 CALL_QUANTUM_NS = 1_000_000

@@ -6,7 +6,7 @@ import rosgrade_channel as ch
 from . import _graph, _runtime
 from ._rclpy_pybind11 import DESTROYED, PUBLISHER_CONTEXT_INVALID, InvalidHandle, RCLError
 from .duration import Duration
-from .qos import DurabilityPolicy
+from .qos import DurabilityPolicy, offered_policies, wire_policies
 
 
 class Publisher:
@@ -21,7 +21,8 @@ class Publisher:
         self.event_handlers: list = []
         self._handle: int | None = _graph.register(
             "pub", topic, msg_type, qos_profile.keeps(),
-            qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL, node.context)
+            qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL, node.context,
+            wire_policies(offered_policies(qos_profile)))
 
     def _check_handle(self) -> int:
         if self._handle is None:

@@ -4,6 +4,8 @@ from __future__ import annotations
 import warnings
 from enum import Enum, IntEnum
 
+import rosgrade_qos
+
 from .duration import Duration
 
 
@@ -256,8 +258,6 @@ class QoSPresetProfiles(Enum):
 # The policies a publisher or subscription ends up with for SYSTEM_DEFAULT (Fast DDS's writer and reader defaults).
 _SYSTEM_DEFAULT_OFFERED = (ReliabilityPolicy.RELIABLE, DurabilityPolicy.TRANSIENT_LOCAL)
 _SYSTEM_DEFAULT_REQUESTED = (ReliabilityPolicy.BEST_EFFORT, DurabilityPolicy.VOLATILE)
-_INCOMPATIBLE_QOS_WARNING = ("New publisher discovered on topic '{topic}', offering incompatible QoS. "
-                             "No messages will be received from it. Last incompatible policy: {policy}")
 
 
 def offered_policies(profile: QoSProfile) -> tuple[ReliabilityPolicy, DurabilityPolicy]:
@@ -294,20 +294,17 @@ def requested_policies(profile: QoSProfile, discovered: list[tuple[ReliabilityPo
 
 def incompatible_policy(offered: tuple[ReliabilityPolicy, DurabilityPolicy],
                         requested: tuple[ReliabilityPolicy, DurabilityPolicy]) -> QoSPolicyKind | None:
-    """The last policy in which a publisher offers less than a subscription requests (None: they match).
+    """The last policy in which a publisher offers less than a subscription requests (None: they match), by the
+    rule the grader's routing uses too (rosgrade_qos)."""
+    last = rosgrade_qos.incompatible(wire_policies(offered), wire_policies(requested))
+    return None if last is None else QoSPolicyKind[last]
 
-    A subscription that requests RELIABLE gets nothing from a BEST_EFFORT publisher, one that requests
-    TRANSIENT_LOCAL nothing from a VOLATILE one; the reverse pairs match. Reliability is checked after durability,
-    so it is the one named when both differ.
-    """
-    last = None
-    if offered[1] == DurabilityPolicy.VOLATILE and requested[1] == DurabilityPolicy.TRANSIENT_LOCAL:
-        last = QoSPolicyKind.DURABILITY
-    if offered[0] == ReliabilityPolicy.BEST_EFFORT and requested[0] == ReliabilityPolicy.RELIABLE:
-        last = QoSPolicyKind.RELIABILITY
-    return last
+
+def wire_policies(policies: tuple[ReliabilityPolicy, DurabilityPolicy]) -> tuple[str, str]:
+    """Resolved (reliability, durability) as the grader's routing names them (ADVERTISE/SUBSCRIBE's qos)."""
+    return policies[0].name, policies[1].name
 
 
 def incompatible_qos_warning(topic: str, policy: QoSPolicyKind) -> str:
     """What a subscription's default event handler logs when it discovers a publisher it cannot match."""
-    return _INCOMPATIBLE_QOS_WARNING.format(topic=topic, policy=qos_policy_name_from_kind(policy))
+    return rosgrade_qos.SUBSCRIPTION_WARNING.format(topic=topic, policy=qos_policy_name_from_kind(policy))

@@ -15,22 +15,24 @@ from rosgrade_node import runtime
 from . import _graph, _runtime
 from ._rclpy_pybind11 import DESTROYED, InvalidHandle
 from .qos import (DurabilityPolicy, QoSPolicyKind, ReliabilityPolicy, incompatible_policy, incompatible_qos_warning,
-                  requested_policies)
+                  requested_policies, wire_policies)
 
 # How the simulated robot offers every topic it publishes: as the Jazzy simulation's ros_gz_bridge offers each topic
 # it bridges (rclcpp::QoS(KeepLast(10)) in ros_gz_bridge's factory.hpp: RELIABLE, VOLATILE).
 WORLD_OFFERED = (ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE)
 
 
-def _world_mismatch(topic: str, qos_profile) -> QoSPolicyKind | None:
-    """The policy in which the robot's publisher cannot serve a subscription to ``topic`` (None: it matches, or the
-    robot does not publish there). BEST_AVAILABLE is resolved now: against the robot's publisher once this process
-    has matched anything (its discovery is over), else against none."""
-    if not any(name == topic for name, _ in runtime.world_topics):
-        return None
-    discovered = [WORLD_OFFERED] if runtime.scheduler is not None and any(runtime.scheduler.connections.values()) \
-        else []
-    return incompatible_policy(WORLD_OFFERED, requested_policies(qos_profile, discovered))
+def _requested(topic: str, qos_profile) -> tuple[ReliabilityPolicy, DurabilityPolicy]:
+    """What a new subscription to ``topic`` requests. BEST_AVAILABLE is resolved now: against the robot's publisher
+    when the robot publishes there and this process has matched anything (its discovery is over), else against
+    none."""
+    discovered = [WORLD_OFFERED] if _is_world_topic(topic) and runtime.scheduler is not None \
+        and any(runtime.scheduler.connections.values()) else []
+    return requested_policies(qos_profile, discovered)
+
+
+def _is_world_topic(topic: str) -> bool:
+    return any(name == topic for name, _ in runtime.world_topics)
 
 
 def _wants_info(callback) -> bool:
@@ -61,12 +63,14 @@ class Subscription:
         self._with_info = _wants_info(callback)
         self._keep = qos_profile.keeps()
         self._queue: deque[tuple[bytes, int]] = deque()
-        self._mismatch = _world_mismatch(topic, qos_profile)  # the policy the robot's publisher fails, if any
+        requested = _requested(topic, qos_profile)
+        # the policy the robot's publisher fails, if any (other nodes' publishers: the grader does not route them)
+        self._mismatch = incompatible_policy(WORLD_OFFERED, requested) if _is_world_topic(topic) else None
         self._warned = False
         self._warning_due = False  # the robot's publisher was discovered: the default event handler's warning is due
         self._handle: int | None = _graph.register(
             "sub", topic, msg_type, self._keep, qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL,
-            node.context)
+            node.context, wire_policies(requested))
         _runtime.scheduler().add_sink(self._handle, self._push)
 
     def _push(self, data: bytes):
