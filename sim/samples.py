@@ -148,12 +148,17 @@ class LogSample:
     msg: str
 
 
+# rclcpp::QoS(KeepLast(n)): the (reliability, durability) of a world's ROS 2 endpoint unless it declares another.
+DEFAULT_QOS = ("RELIABLE", "VOLATILE")
+
+
 @dataclass(frozen=True, slots=True)
 class WorldTopic:
     """A topic the world publishes: its message type, rate, and who may see it.
 
     ``to_nodes``: delivered to subscribing nodes (False: recorded for the grader only, like the ground truth).
     ``shared``: nodes may publish there too (``/tf``); on any other world topic a node's messages are ignored.
+    ``qos``: what a ROS 2 node's subscription must be compatible with (rosgrade_qos names).
     """
 
     topic: str
@@ -161,6 +166,7 @@ class WorldTopic:
     rate_hz: float
     to_nodes: bool = True
     shared: bool = False
+    qos: tuple[str, str] = DEFAULT_QOS  # ROS 2: (reliability, durability) the world's publisher offers
 
 
 @dataclass(frozen=True, slots=True)

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from functools import cached_property, partial
 from typing import Protocol
 
-from sim.samples import (ColorSample, CommandSample, GroundTruthSample, LogSample, Sample, ServiceResult,
+from sim.samples import (DEFAULT_QOS, ColorSample, CommandSample, GroundTruthSample, LogSample, Sample, ServiceResult,
                          TurtlePoseSample, WorldService, WorldTopic)
 from sim.scenario import Scenario, ScenarioTimes
 from sim import turtlesim_params
@@ -235,6 +235,12 @@ class TurtlesimWorld(ScenarioTimes):
     def command_topics(self) -> tuple[str, ...]:
         """Each live turtle's cmd_vel (scripted commands without a topic go to turtle1's)."""
         return tuple(turtle.topic("cmd_vel") for turtle in self.turtles.values())
+
+    @property
+    def command_qos(self) -> tuple[str, str]:
+        """(reliability, durability) a turtle's ROS 2 cmd_vel subscription requests: Jazzy's turtle.cpp subscribes
+        with rclcpp::QoS(KeepLast(7)), RELIABLE and VOLATILE."""
+        return DEFAULT_QOS
 
     @property
     def known_as(self) -> str:

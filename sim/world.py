@@ -25,8 +25,8 @@ from sim.clock import last_step_at, step_ns, steps_per_tick
 from sim.model import build_model
 from sim.odometry import Estimate, WheelOdometry, WorldPoseOdometry, ground_truth, quaternion_yaw
 from sim.profile import RobotProfile, covariance_matrix, load_robot
-from sim.samples import (CommandSample, ContactSample, GroundTruthSample, OdometrySample, Sample, ServiceResult, TransformSample,
-                         WorldService, WorldTopic)
+from sim.samples import (DEFAULT_QOS, CommandSample, ContactSample, GroundTruthSample, OdometrySample, Sample, ServiceResult,
+                         TransformSample, WorldService, WorldTopic)
 from sim.scenario import Scenario, ScenarioTimes
 from sim.sensors import Imu, JointStates, Scanner
 
@@ -235,6 +235,13 @@ class World(ScenarioTimes):
     def command_topics(self) -> tuple[str, ...]:
         """Topics the robot's base listens on (the first is where scripted commands go by default)."""
         return self._topics
+
+    @property
+    def command_qos(self) -> tuple[str, str]:
+        """(reliability, durability) the base's ROS 2 command subscriber requests, in every mode: the Jazzy
+        simulation's ros_gz_bridge (rclcpp::QoS(KeepLast(10))) and the real robot's turtlebot3_node (KeepLast(10))
+        both ask for RELIABLE, VOLATILE, so a BEST_EFFORT publisher never reaches them."""
+        return DEFAULT_QOS
 
     @property
     def node_name(self) -> str:

@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from grader.runtime import qos_match
+
 if TYPE_CHECKING:
     from grader.runtime.session import Session, _Node
 
@@ -99,6 +101,7 @@ def _endpoint_notes(session: Session, node: _Node, command_topics: tuple[str, ..
                 f"{_count(pub.dropped_before_connect, 'message')} on {pub.topic} went out in the first "
                 f"{_CONNECT_MS} ms after the publisher was created, before the robot had connected, and were "
                 "lost (as on a real ROS system). Wait briefly after creating a publisher, or publish in a loop.")
+    notes += qos_match.findings(session, node, world)
     for sub in state.subscribers.values():
         expected = world_topics.get(sub.topic)
         if expected is not None and expected != sub.type:

@@ -32,7 +32,7 @@ from grader.runtime.node_link import (ROBOT, Endpoint, EndpointLimitExceeded, Gr
                                       Publication, ServiceAnswer, ServiceCall, ServiceOffer, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
-from grader.runtime.qos_match import connects
+from grader.runtime.qos_match import connects, robot_hears
 from grader.runtime.scenario_participant import ParticipantError, ScenarioParticipant, plan
 from grader.runtime.services import Caller, ServiceRouter
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
@@ -537,7 +537,8 @@ class Session:
         if t < self.ready_ns(publisher):
             return []
         found: list = []
-        if publisher.topic in self.world.command_topics and publisher.type in self.command_types:
+        if publisher.topic in self.world.command_topics and publisher.type in self.command_types and \
+                robot_hears(publisher, self.world):
             found.append(ROBOT)
         for index, other in enumerate(self.nodes):
             if other.alive and self.discovered(other, t):

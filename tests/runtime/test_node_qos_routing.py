@@ -1,7 +1,7 @@
 """Two students' rclpy nodes on one topic: the grader routes the talker's messages to the listener only when their
 QoS match, as two real Jazzy nodes do (a BEST_EFFORT publisher and a RELIABLE subscription: nothing arrives; the
 reverse pair, and the defaults, connect). The counts the nodes see (get_subscription_count/get_publisher_count)
-leave out the unmatched peer too."""
+leave out the unmatched peer too, and the report names the mismatch."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -79,9 +79,10 @@ def test_two_nodes_connect_by_qos(tmp_path: Path, case: str) -> None:
     talker.write_text(TALKER.format(qos=talker_qos))
     listener.write_text(LISTENER.format(qos=listener_qos))
     scenario = Scenario(duration=3.0)
-    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=talker, flavour="ros2"),
-                                          NodeSpec(script=listener, flavour="ros2"))),
-        tmp_path / "r.mcap", tmp_path / "r.log")
+    result = run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=talker, flavour="ros2"),
+                                                   NodeSpec(script=listener, flavour="ros2"))),
+                 tmp_path / "r.mcap", tmp_path / "r.log")
+    named = [line for line in result.diagnostics if "incompatible" in line]
     recording = Recording.open(tmp_path / "r.mcap")
     heard = [line.text.split() for line in recording.output_lines() if line.text.startswith("heard")]
     subs = [line.text.split() for line in recording.output_lines() if line.text.startswith("subscriptions")]
@@ -89,6 +90,9 @@ def test_two_nodes_connect_by_qos(tmp_path: Path, case: str) -> None:
     if connected:
         assert int(heard[-1][1]) >= 10 and heard[-1][3] == "1", heard
         assert subs[-1][1] == "1", subs
+        assert named == [], named
     else:
         assert heard[-1][1] == "0" and heard[-1][3] == "0", heard
         assert subs[-1][1] == "0", subs
+        assert len(named) == 1 and named[0].startswith("listener.py's subscription to /chatter requests "), named
+        assert f"talker.py's publisher offers {'BEST_EFFORT' if 'BEST' in talker_qos else 'VOLATILE'}" in named[0]
