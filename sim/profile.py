@@ -166,6 +166,7 @@ class ScanVersion(_Model):
 
     rate_hz: int | None = Field(None, gt=0)
     angle_max: float | None = None
+    reliability: Literal["RELIABLE", "BEST_EFFORT"] | None = None
 
 
 class ScanConfig(_Model):
@@ -186,6 +187,8 @@ class ScanConfig(_Model):
     range_min: float = Field(ge=0)
     range_max: PositiveFloat
     noise_stddev: float = Field(0.0, ge=0)
+    # ROS 2: the reliability /scan is offered with (VOLATILE either way); a RELIABLE subscriber misses BEST_EFFORT
+    reliability: Literal["RELIABLE", "BEST_EFFORT"] = "RELIABLE"
     ros2: ScanVersion | None = None  # the ROS 2 (Jazzy) simulation's differences
 
     def for_flavour(self, flavour: str) -> ScanConfig:

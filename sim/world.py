@@ -221,7 +221,8 @@ class World(ScenarioTimes):
             declared.append(WorldTopic(sensors.joint_states.topic, "sensor_msgs/JointState",
                                         sensors.joint_states.rate_hz))
         if self._scan is not None:
-            declared.append(WorldTopic(self._scan.topic, "sensor_msgs/LaserScan", self._scan.rate_hz))
+            declared.append(WorldTopic(self._scan.topic, "sensor_msgs/LaserScan", self._scan.rate_hz,
+                                       qos=(self._scan.reliability, "VOLATILE")))
         if self._obstacle_names:
             declared.append(WorldTopic(CONTACT_TOPIC, "std_msgs/String", GROUND_TRUTH_HZ, to_nodes=False))
         return tuple(declared)

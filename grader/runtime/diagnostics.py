@@ -125,6 +125,7 @@ def topic_summary(session: Session) -> list[str]:
         state = node.link.state
         lines += _capped([f"{label} published {_count(p.count, 'message')} on {p.topic} ({p.type})."
                           for p in state.publishers.values() if p.topic not in LIBRARY_TOPICS]
-                         + [f"{label} received {_count(s.count, 'message')} on {s.topic} ({s.type})."
+                         + [f"{label} received {_count(qos_match.heard(session, s), 'message')} on {s.topic} "
+                            f"({s.type})."
                             for s in state.subscribers.values()], f"publishers and subscribers of {label}")
     return lines

@@ -252,6 +252,7 @@ class Session:
             link.handshake({"t_ns": t, "params": self._start_params(node_spec),
                             "ros_namespace": node_spec.ros_namespace or "", "wall_epoch": _wall_epoch(t),
                             "world_topics": sorted([topic, type_name] for topic, type_name in self.world_topics),
+                            "world_qos": {p.topic: list(p.qos) for p in self.publications.values() if p.to_nodes},
                             "interfaces": self.spec.interfaces.payload if self.spec.interfaces else None})
         except (NodeExited, NodeSilent, NodeOverLimit, ProtocolViolation) as exc:
             self._node_failed(node, exc, t)

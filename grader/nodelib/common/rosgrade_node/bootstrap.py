@@ -9,6 +9,7 @@ import sys
 
 import rosgrade_channel as ch
 import rosgrade_params
+import rosgrade_qos
 
 from . import cpus, excepthook, pids, realtime, runtime, streams, threads, timepatch
 from .link import Link
@@ -54,6 +55,7 @@ def start(channel: str) -> None:
     runtime.ros_namespace = str(start_msg.get("ros_namespace") or "")
     runtime.world_topics = [tuple(pair) for pair in start_msg.get("world_topics") or ()
                             if isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, str) for x in pair)]
+    runtime.world_qos = _world_qos(start_msg.get("world_qos") or {})
     if runtime.ros_namespace:
         os.environ["ROS_NAMESPACE"] = runtime.ros_namespace
     if start_msg.get("interfaces"):  # the submission's own .msg/.srv/.action types, before its imports run
@@ -78,6 +80,14 @@ def start(channel: str) -> None:
     signal.signal(signal.SIGINT, lambda signum, frame: sched.request_interrupt(f"signal-{signum}", frame))
     signal.signal(signal.SIGVTALRM, lambda signum, frame: sched.on_cpu_tick(frame))
     signal.setitimer(signal.ITIMER_VIRTUAL, _CPU_TICK_S, _CPU_TICK_S)
+
+
+def _world_qos(obj) -> dict[str, tuple[str, str]]:
+    """START's world_qos (topic -> [reliability, durability]), checked: a bad one is a BootstrapError."""
+    try:
+        return {str(topic): rosgrade_qos.check(*pair) for topic, pair in dict(obj).items()}
+    except (TypeError, ValueError) as exc:
+        raise BootstrapError(f"START world_qos must map topics to [reliability, durability]: {exc}") from None
 
 
 def _flush() -> None:

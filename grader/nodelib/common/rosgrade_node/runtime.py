@@ -15,6 +15,7 @@ ros_namespace: str = ""
 wall_epoch_ns: int = 0
 start_ns: int = 0  # world time when the process started (START's t_ns)
 world_topics: list = []  # [topic, type] pairs the world publishes (for rospy.get_published_topics)
+world_qos: dict = {}  # ROS 2: topic -> (reliability, durability) the world offers it with (rosgrade_qos names)
 
 
 def wall_time() -> float:

@@ -17,16 +17,22 @@ from ._rclpy_pybind11 import DESTROYED, InvalidHandle
 from .qos import (DurabilityPolicy, QoSPolicyKind, ReliabilityPolicy, incompatible_policy, incompatible_qos_warning,
                   requested_policies, wire_policies)
 
-# How the simulated robot offers every topic it publishes: as the Jazzy simulation's ros_gz_bridge offers each topic
-# it bridges (rclcpp::QoS(KeepLast(10)) in ros_gz_bridge's factory.hpp: RELIABLE, VOLATILE).
+# How the simulated robot offers a topic it publishes unless the world says otherwise (START's world_qos): as the Jazzy
+# simulation's ros_gz_bridge offers each topic it bridges (rclcpp::QoS(KeepLast(10)), factory.hpp: RELIABLE, VOLATILE).
 WORLD_OFFERED = (ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE)
+
+
+def _world_offered(topic: str) -> tuple[ReliabilityPolicy, DurabilityPolicy]:
+    """How the robot offers ``topic`` (a real robot's LiDAR driver: BEST_EFFORT)."""
+    declared = runtime.world_qos.get(topic)
+    return WORLD_OFFERED if declared is None else (ReliabilityPolicy[declared[0]], DurabilityPolicy[declared[1]])
 
 
 def _requested(topic: str, qos_profile) -> tuple[ReliabilityPolicy, DurabilityPolicy]:
     """What a new subscription to ``topic`` requests. BEST_AVAILABLE is resolved now: against the robot's publisher
     when the robot publishes there and this process has matched anything (its discovery is over), else against
     none."""
-    discovered = [WORLD_OFFERED] if _is_world_topic(topic) and runtime.scheduler is not None \
+    discovered = [_world_offered(topic)] if _is_world_topic(topic) and runtime.scheduler is not None \
         and any(runtime.scheduler.connections.values()) else []
     return requested_policies(qos_profile, discovered)
 
@@ -65,7 +71,7 @@ class Subscription:
         self._queue: deque[tuple[bytes, int]] = deque()
         requested = _requested(topic, qos_profile)
         # the policy the robot's publisher fails, if any (other nodes' publishers: the grader does not route them)
-        self._mismatch = incompatible_policy(WORLD_OFFERED, requested) if _is_world_topic(topic) else None
+        self._mismatch = incompatible_policy(_world_offered(topic), requested) if _is_world_topic(topic) else None
         self._warned = False
         self._warning_due = False  # the robot's publisher was discovered: the default event handler's warning is due
         self._handle: int | None = _graph.register(
