@@ -54,6 +54,7 @@ class Endpoint:
     closed: bool = False
     dropped_before_connect: int = 0
     latched: Latched | None = None  # a latched publisher's last message
+    qos_told: set = field(default_factory=set)  # peers (node index, handle) it was told it cannot match (qos_match)
     ready_ns: int | None = None  # when a publisher connects, once the session has decided it (Session.ready_ns)
     last_data: bytes | None = None  # a publisher's last message (the node keeps it too: see inert batches)
 
@@ -573,11 +574,12 @@ class NodeLink:
     def resume(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], shutdown: str | None,
                connections: dict[int, int] | None = None, params: list[tuple[str, object]] | None = None,
                later: list[tuple[int, int, list[tuple[int, bytes]]]] = (), until_ns: int | None = None,
-               inert: dict[int, bool] | None = None) -> None:
+               inert: dict[int, bool] | None = None, qos_events: list[tuple[int, str]] = ()) -> None:
         """Send one BATCH frame: the new time (with changed connection counts per topic handle, and the parameter
         changes others made, in order), messages for the node's subscribers and maybe Ctrl+C; the node runs until
         its next WAIT. ``later``: (t_ns, clock_ns, deliveries) of later moments it may run on its own, with its own
-        wake-ups, up to ``until_ns``; ``inert``: its publishers that do not end that (see encode_batch)."""
+        wake-ups, up to ``until_ns``; ``inert``: its publishers that do not end that (see encode_batch);
+        ``qos_events``: (handle, policy) per peer endpoint just discovered whose QoS is incompatible (qos_match)."""
         header: dict = {"t_ns": t_ns, "clock_ns": clock_ns}
         if until_ns is not None:
             header["moments"] = [[t, clock, len(items)] for t, clock, items in later]
@@ -590,4 +592,6 @@ class NodeLink:
             header["params"] = [[name, value] for name, value in params]
         if shutdown is not None:
             header["shutdown"] = shutdown
+        if qos_events:
+            header["qos"] = [[ident, policy] for ident, policy in qos_events]
         self._send(ch.encode_batch(header, deliveries))

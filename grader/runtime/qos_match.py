@@ -42,6 +42,37 @@ def robot_hears(publisher: Endpoint, world) -> bool:
     return robot_mismatch(publisher, world) is None
 
 
+def news(session: Session, node: _Node, t: int) -> list[tuple[int, str]]:
+    """(handle, policy) for each of the node's endpoints per peer endpoint discovered by t whose QoS it cannot
+    match, told once: what rclpy's default event handlers log, on the subscription's and the publisher's side."""
+    events: list[tuple[int, str]] = []
+    for index, other in enumerate(session.nodes):
+        if not other.alive:
+            continue
+        for sub in node.link.state.subscribers.values():
+            if session.discovered(node, t) and not sub.closed:
+                events += _tell(sub, index, [pub for pub in other.link.state.publishers.values() if not pub.closed
+                                             and t >= max(session.ready_ns(pub), sub.registered_ns)], mismatch)
+        for pub in node.link.state.publishers.values():
+            if session.discovered(other, t) and not pub.closed and t >= session.ready_ns(pub):
+                events += _tell(pub, index, [sub for sub in other.link.state.subscribers.values() if not sub.closed
+                                             and t >= sub.registered_ns], lambda sub, pub: mismatch(pub, sub))
+    return events
+
+
+def _tell(mine: Endpoint, index: int, peers: list[Endpoint], rule) -> list[tuple[int, str]]:
+    """Events for ``mine`` about the peers on its topic (of node ``index``) it has not been told about yet;
+    ``rule(peer, mine)`` is the policy they fail in, or None."""
+    events = []
+    for peer in peers:
+        if (peer.topic, peer.type) == (mine.topic, mine.type) and (index, peer.ident) not in mine.qos_told:
+            policy = rule(peer, mine)
+            if policy is not None:
+                mine.qos_told.add((index, peer.ident))
+                events.append((mine.ident, policy))
+    return events
+
+
 def world_mismatch(session: Session, subscriber: Endpoint) -> str | None:
     """The policy in which the world's publisher of the subscriber's topic fails it (the node's client library then
     drops every message the grader hands it), or None."""

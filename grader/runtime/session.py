@@ -32,7 +32,7 @@ from grader.runtime.node_link import (ROBOT, Endpoint, EndpointLimitExceeded, Gr
                                       Publication, ServiceAnswer, ServiceCall, ServiceOffer, ServiceReply)
 from grader.runtime.param_server import GRADER, PARAM_TOPIC, WORLD, ParamServer, initial_tree
 from grader.runtime.process import NodeProcess, ProcessError
-from grader.runtime.qos_match import connects, robot_hears
+from grader.runtime.qos_match import connects, news, robot_hears
 from grader.runtime.scenario_participant import ParticipantError, ScenarioParticipant, plan
 from grader.runtime.services import Caller, ServiceRouter
 from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
@@ -416,7 +416,7 @@ class Session:
                 link.resume(t, clock, deliveries, shutdown, changes, params,
                             later=ahead.later if ahead is not None else (),
                             until_ns=ahead.until_ns if ahead is not None else None,
-                            inert=ahead.inert if ahead is not None else None)
+                            inert=ahead.inert if ahead is not None else None, qos_events=news(self, node, t))
             self.ahead = ahead
             node.wake_ns = link.run_until_wait(
                 t, lambda event: self._node_event(node, event, ahead.now_ns if ahead is not None else t),

@@ -61,3 +61,16 @@ def test_endpoints_without_qos_match_everything() -> None:
 def test_bad_qos_in_a_frame_is_a_clear_violation(value: list[str], says: str) -> None:
     with pytest.raises(ProtocolViolation, match=says):
         _qos(value)
+
+
+def test_bad_qos_events_and_world_qos_are_clear_errors() -> None:
+    """A node refuses a BATCH or START whose QoS parts are not what the grader sends, saying what was expected."""
+    import rosgrade_channel as ch
+    from rosgrade_node.bootstrap import BootstrapError, _world_qos
+    from rosgrade_node.link import _qos_events
+    assert _qos_events([[3, "RELIABILITY"]]) == [(3, "RELIABILITY")]
+    with pytest.raises(ch.ChannelError, match="BATCH qos must list"):
+        _qos_events([[3, "DEPTH"]])
+    assert _world_qos({"/scan": ["BEST_EFFORT", "VOLATILE"]}) == {"/scan": ("BEST_EFFORT", "VOLATILE")}
+    with pytest.raises(BootstrapError, match="START world_qos must map topics"):
+        _world_qos({"/scan": ["SENSOR_DATA", "VOLATILE"]})

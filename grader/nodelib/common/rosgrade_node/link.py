@@ -25,11 +25,11 @@ class Batch:
     """What the grader sent in answer to a WAIT (one BATCH frame)."""
 
     __slots__ = ("t_ns", "clock_ns", "deliveries", "moments", "until_ns", "inert", "shutdown", "connections",
-                 "params")
+                 "params", "qos_events")
 
     def __init__(self, t_ns: int, clock_ns: int, deliveries: list[tuple[int, bytes]], moments: list[Moment],
                  until_ns: int | None, inert: dict[int, bool], shutdown: str | None, connections: dict[int, int],
-                 params: list[tuple[str, object]]) -> None:
+                 params: list[tuple[str, object]], qos_events: list[tuple[int, str]] = ()) -> None:
         self.t_ns, self.clock_ns, self.deliveries = t_ns, clock_ns, deliveries
         # Later times, in order, that the node runs on its own while what it does is invisible (see Scheduler), and
         # how far the world ran ahead (None: a plain batch): the node's own wake-ups up to then are moments too.
@@ -43,6 +43,8 @@ class Batch:
         # Parameter changes other nodes (or the world) made since the last batch, in order: [name, value (None:
         # deleted)].
         self.params = params
+        # (handle, policy): a peer endpoint discovered whose QoS the handle's endpoint cannot match (ROS 2).
+        self.qos_events = qos_events
 
 
 class Link:
@@ -146,7 +148,7 @@ class Link:
                          moments=moments, until_ns=until,
                          inert=_grants(header.get("inert") or {}), shutdown=None if shutdown is None else str(shutdown),
                          connections=_counts(header.get("connections") or {}),
-                         params=_changes(header.get("params") or []))
+                         params=_changes(header.get("params") or []), qos_events=_qos_events(header.get("qos") or []))
         except (ch.ChannelError, OSError) as exc:
             _fail(exc)
 
@@ -175,6 +177,13 @@ def _counts(obj) -> dict[int, int]:
         return {int(ident): _int(obj, ident) for ident in obj}
     except ValueError:
         raise ch.ChannelError("BATCH connections must map topic handles to counts") from None
+
+
+def _qos_events(obj) -> list[tuple[int, str]]:
+    if not isinstance(obj, list) or not all(isinstance(e, list) and len(e) == 2 and isinstance(e[0], int)
+                                            and e[1] in ("RELIABILITY", "DURABILITY") for e in obj):
+        raise ch.ChannelError("BATCH qos must list [topic handle, RELIABILITY or DURABILITY] pairs")
+    return [(ident, policy) for ident, policy in obj]
 
 
 def _moments(obj, deliveries: list[tuple[int, bytes]]) -> list[Moment]:

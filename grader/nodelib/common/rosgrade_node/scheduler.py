@@ -89,6 +89,8 @@ class Scheduler:
         self._sinks: dict[int, tuple[Callable[..., _Waiter | None], bool]] = {}
         # Topic handle -> how many nodes it is connected to, as the grader last said (get_num_connections()).
         self.connections: dict[int, int] = {}
+        # Topic handle -> the policies of incompatible peers discovered, not yet logged (rclpy's QoS event handlers).
+        self.qos_events: dict[int, list[str]] = {}
         # The run's parameter server as this node sees it (bootstrap fills it from START; batches bring the changes
         # other nodes made, applied before any thread runs, so every thread reads the same tree at one world time).
         self.param_tree: dict = {}
@@ -315,6 +317,8 @@ class Scheduler:
         self.link.send(ch.encode_wait(wake, any(w.busy for w in self._blocked)))
         batch = self.link.read_batch()
         self.connections.update(batch.connections)
+        for ident, policy in batch.qos_events:
+            self.qos_events.setdefault(ident, []).append(policy)
         rosgrade_params.apply(self.param_tree, batch.params)
         if batch.until_ns is not None:
             self._later.extend(batch.moments)

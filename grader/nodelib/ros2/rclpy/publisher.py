@@ -4,6 +4,7 @@ from __future__ import annotations
 import rosgrade_channel as ch
 
 from . import _graph, _runtime
+from ._qos_events import IncompatibleQoSHandler
 from ._rclpy_pybind11 import DESTROYED, PUBLISHER_CONTEXT_INVALID, InvalidHandle, RCLError
 from .duration import Duration
 from .qos import DurabilityPolicy, offered_policies, wire_policies
@@ -18,11 +19,14 @@ class Publisher:
         self.topic = topic
         self.qos_profile = qos_profile
         self.callback_group = callback_group
-        self.event_handlers: list = []
+        self._events = IncompatibleQoSHandler(node, "pub", topic, callback_group)
+        self.event_handlers: list = [self._events]
         self._handle: int | None = _graph.register(
             "pub", topic, msg_type, qos_profile.keeps(),
             qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL, node.context,
             wire_policies(offered_policies(qos_profile)))
+        self._events.handle = self._handle
+        node.add_waitable(self._events)
 
     def _check_handle(self) -> int:
         if self._handle is None:
@@ -69,4 +73,5 @@ class Publisher:
         if self._handle is not None:
             _graph.unregister(self._handle)
             self._handle = None
+            self._node.remove_waitable(self._events)
 

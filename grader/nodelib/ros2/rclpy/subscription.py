@@ -3,7 +3,8 @@ queue of the QoS depth until an executor takes them.
 
 A subscription to one of the simulated robot's topics whose QoS cannot match the robot's publisher (a RELIABLE one
 against a BEST_EFFORT publisher, a TRANSIENT_LOCAL one against a VOLATILE publisher) receives nothing, and its node
-logs rclpy's "offering incompatible QoS" warning when it first spins after discovery, as real rclpy does.
+logs rclpy's "offering incompatible QoS" warning when it first spins after discovery, as real rclpy does (its
+default event handler, _qos_events; another node's publisher: the grader does not route it and names it in BATCH).
 """
 from __future__ import annotations
 
@@ -14,8 +15,8 @@ from rosgrade_node import runtime
 
 from . import _graph, _runtime
 from ._rclpy_pybind11 import DESTROYED, InvalidHandle
-from .qos import (DurabilityPolicy, QoSPolicyKind, ReliabilityPolicy, incompatible_policy, incompatible_qos_warning,
-                  requested_policies, wire_policies)
+from ._qos_events import IncompatibleQoSHandler
+from .qos import DurabilityPolicy, ReliabilityPolicy, incompatible_policy, requested_policies, wire_policies
 
 # How the simulated robot offers a topic it publishes unless the world says otherwise (START's world_qos): as the Jazzy
 # simulation's ros_gz_bridge offers each topic it bridges (rclcpp::QoS(KeepLast(10)), factory.hpp: RELIABLE, VOLATILE).
@@ -73,18 +74,22 @@ class Subscription:
         # the policy the robot's publisher fails, if any (other nodes' publishers: the grader does not route them)
         self._mismatch = incompatible_policy(_world_offered(topic), requested) if _is_world_topic(topic) else None
         self._warned = False
-        self._warning_due = False  # the robot's publisher was discovered: the default event handler's warning is due
+        self._events = IncompatibleQoSHandler(node, "sub", topic, callback_group)
+        self.event_handlers.append(self._events)
         self._handle: int | None = _graph.register(
             "sub", topic, msg_type, self._keep, qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL,
             node.context, wire_policies(requested))
+        self._events.handle = self._handle
         _runtime.scheduler().add_sink(self._handle, self._push)
+        node.add_waitable(self._events)
 
     def _push(self, data: bytes):
         """A delivery: keep the newest ``depth`` messages (KEEP_LAST drops the oldest); none from a publisher whose
         QoS does not match (the first one makes the warning due: the publisher has been discovered)."""
         if self._mismatch is not None:
             if not self._warned:
-                self._warned = self._warning_due = True
+                self._warned = True
+                self._events.due(self._mismatch.name)
             return None
         self._queue.append((data, _runtime.system_ns()))
         if self._keep is not None:
@@ -93,15 +98,10 @@ class Subscription:
         return None
 
     def has_message(self) -> bool:
-        return bool(self._queue) or self._warning_due
+        return bool(self._queue)
 
     def take(self):
-        """(message or raw bytes, MessageInfo dict) of the oldest queued delivery, or None (also after logging a due
-        incompatible-QoS warning, which the executor handles as an event)."""
-        if self._warning_due:
-            self._warning_due = False
-            self._node.get_logger().warning(incompatible_qos_warning(self.topic, self._mismatch))
-            return None
+        """(message or raw bytes, MessageInfo dict) of the oldest queued delivery, or None."""
         if not self._queue:
             return None
         data, received = self._queue.popleft()
@@ -142,4 +142,5 @@ class Subscription:
             _graph.unregister(self._handle)
             self._handle = None
             self._queue.clear()
+            self._node.remove_waitable(self._events)
 
