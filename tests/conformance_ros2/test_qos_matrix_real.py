@@ -12,7 +12,7 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from real_ros2 import unavailable_reason  # noqa: E402
-from record_qos_matrix import record_matrix  # noqa: E402
+from record_qos_matrix import ROLES, record_matrix  # noqa: E402
 
 pytestmark = pytest.mark.slow
 
@@ -25,5 +25,5 @@ def test_real_rclpy_matches_the_committed_qos_record() -> None:
         pytest.skip(reason)
     committed = json.loads(RECORD.read_text())
     again = record_matrix()
-    for role in ("sub", "sub_discovered"):
+    for role in ROLES:
         assert again[role] == committed[role], role

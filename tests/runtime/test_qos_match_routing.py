@@ -1,7 +1,8 @@
 """The grader's routing connects two nodes' endpoints by the QoS they registered exactly as two real Jazzy rclpy
 nodes connect (tests/conformance_ros2/qos_matrix_jazzy.json, recorded from a real publisher node and a real
 subscriber node): every (offered, requested) pair of the record, resolved by rosgrade's rclpy as its publisher and
-subscription send it in ADVERTISE/SUBSCRIBE, connects or not as recorded. Bad QoS in a frame is a clear violation."""
+subscription send it in ADVERTISE/SUBSCRIBE, connects or not as recorded, whichever node started first
+(``sub_first``), and both sides' warnings name the policy the record names. Bad QoS in a frame is a clear violation."""
 from __future__ import annotations
 
 import json
@@ -9,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from grader.nodelib.common import rosgrade_qos
 from grader.runtime.node_link import Endpoint, ProtocolViolation, _qos
 from grader.runtime.qos_match import connects, mismatch
 from tests.nodelib_ros2_rclpy import ros2_grader  # noqa: F401 - puts the ROS 2 import roots on sys.path
@@ -31,8 +33,9 @@ def _endpoint(qos: tuple[str, str] | None) -> Endpoint:
                     registered_ns=0, qos=qos)
 
 
-@pytest.mark.parametrize("role", ["sub", "sub_discovered"])
+@pytest.mark.parametrize("role", ["sub", "sub_discovered", "sub_first"])
 def test_routing_connects_as_real_rclpy_nodes(role: str) -> None:
+    """Which pairs connect, and the policy each side's warning names (publisher's and subscription's texts)."""
     routed, names = {}, {}
     for name in RECORD[role]["received"]:
         r1, d1, r2, d2 = (_SHORT[key] for key in name.removeprefix("/qos_").split("_"))
@@ -44,8 +47,9 @@ def test_routing_connects_as_real_rclpy_nodes(role: str) -> None:
         if not routed[name]:
             names[name] = mismatch(pub, sub)
     assert routed == RECORD[role]["received"]
-    warned = {w.split("'")[1]: w.rsplit(" ", 1)[1] for w in RECORD[role]["subscription_warnings"]}
-    assert names == warned
+    for side, text in (("subscription_warnings", rosgrade_qos.SUBSCRIPTION_WARNING),
+                       ("publisher_warnings", rosgrade_qos.PUBLISHER_WARNING)):
+        assert sorted(text.format(topic=name, policy=policy) for name, policy in names.items()) == RECORD[role][side]
 
 
 def test_endpoints_without_qos_match_everything() -> None:
