@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from grader.nodelib.common import rosgrade_qos
-from grader.runtime.node_link import Endpoint
+from grader.runtime.node_link import ROBOT, Endpoint
 
 if TYPE_CHECKING:
     from grader.runtime.session import Session, _Node
@@ -57,6 +57,12 @@ def news(session: Session, node: _Node, t: int) -> list[tuple[int, str]]:
             if session.discovered(other, t) and not pub.closed and t >= session.ready_ns(pub):
                 events += _tell(pub, index, [sub for sub in other.link.state.subscribers.values() if not sub.closed
                                              and t >= sub.registered_ns], lambda sub, pub: mismatch(pub, sub))
+    for pub in node.link.state.publishers.values():  # the robot's command subscriber, once the publisher connects
+        if (ROBOT not in pub.qos_told and not pub.closed and t >= session.ready_ns(pub)
+                and pub.topic in session.world.command_topics and pub.type in session.command_types
+                and (policy := robot_mismatch(pub, session.world)) is not None):
+            pub.qos_told.add(ROBOT)
+            events.append((pub.ident, policy))
     return events
 
 

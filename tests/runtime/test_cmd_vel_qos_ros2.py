@@ -1,7 +1,7 @@
 """A ROS 2 node's velocity publisher with a BEST_EFFORT QoS never reaches the robot's command subscriber, which
 requests RELIABLE on Jazzy (the TurtleBot3 simulation's ros_gz_bridge and the real robot's turtlebot3_node with
-KeepLast(10); turtlesim's turtle.cpp with KeepLast(7)): the robot stays where it started and the report says why
-and what to write instead. A node's own QoS mismatch with another node is named too. Default QoS still drives."""
+KeepLast(10); turtlesim's turtle.cpp with KeepLast(7)): the robot stays where it started, the node logs rclpy's
+publisher-side warning once, and the report says why and what to write instead. The default QoS still drives it."""
 from __future__ import annotations
 
 import math
@@ -64,8 +64,12 @@ def test_best_effort_cmd_vel_never_drives_the_robot(tmp_path: Path, robot: str, 
     if qos == "10":
         assert named == [], result.diagnostics
         assert moved > 0.1, moved
+        assert not [line for line in recording.rosout() if "incompatible QoS" in line.msg]
     else:
         assert moved < 1e-3, moved
         assert len(named) == 1, result.diagnostics
         assert "offers BEST_EFFORT QoS" in named[0] and "requests RELIABLE" in named[0], named
         assert "never received a command" in named[0] and ", 10)" in named[0], named
+        warned = [line.msg for line in recording.rosout() if "incompatible QoS" in line.msg]
+        assert warned == [f"New subscription discovered on topic '/{ROBOTS[robot][1]}', requesting incompatible QoS. "
+                          "No messages will be sent to it. Last incompatible policy: RELIABILITY"], warned
