@@ -38,8 +38,14 @@ def robot_mismatch(publisher: Endpoint, world) -> str | None:
     return None if publisher.qos is None else rosgrade_qos.incompatible(publisher.qos, world.command_qos)
 
 
-def robot_hears(publisher: Endpoint, world) -> bool:
-    return robot_mismatch(publisher, world) is None
+def robot_hears(publisher: Endpoint, session: Session) -> bool:
+    """Whether the robot's base takes what a node's publisher sends: a command topic, a command type, matching QoS."""
+    return _commands(publisher, session) and robot_mismatch(publisher, session.world) is None
+
+
+def _commands(publisher: Endpoint, session: Session) -> bool:
+    """Whether the publisher is on one of the robot's command topics with a command type."""
+    return publisher.topic in session.world.command_topics and publisher.type in session.command_types
 
 
 def news(session: Session, node: _Node, t: int) -> list[tuple[int, str]]:
@@ -58,8 +64,7 @@ def news(session: Session, node: _Node, t: int) -> list[tuple[int, str]]:
                 events += _tell(pub, index, [sub for sub in other.link.state.subscribers.values() if not sub.closed
                                              and t >= sub.registered_ns], lambda sub, pub: mismatch(pub, sub))
     for pub in node.link.state.publishers.values():  # the robot's command subscriber, once the publisher connects
-        if (ROBOT not in pub.qos_told and not pub.closed and t >= session.ready_ns(pub)
-                and pub.topic in session.world.command_topics and pub.type in session.command_types
+        if (ROBOT not in pub.qos_told and not pub.closed and t >= session.ready_ns(pub) and _commands(pub, session)
                 and (policy := robot_mismatch(pub, session.world)) is not None):
             pub.qos_told.add(ROBOT)
             events.append((pub.ident, policy))
@@ -98,7 +103,7 @@ def findings(session: Session, node: _Node, here: str) -> list[str]:
     (``here``: the robot as users know it), its subscriptions and other nodes' publishers."""
     label, notes = node.outcome.script, []
     for pub in node.link.state.publishers.values():
-        policy = robot_mismatch(pub, session.world) if pub.topic in session.world.command_topics else None
+        policy = robot_mismatch(pub, session.world) if _commands(pub, session) else None
         if policy is not None:
             i = _POLICY_INDEX[policy]
             notes.append(f"{label}'s publisher on {pub.topic} offers {pub.qos[i]} QoS, but {here}'s subscriber "

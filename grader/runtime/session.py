@@ -538,8 +538,7 @@ class Session:
         if t < self.ready_ns(publisher):
             return []
         found: list = []
-        if publisher.topic in self.world.command_topics and publisher.type in self.command_types and \
-                robot_hears(publisher, self.world):
+        if robot_hears(publisher, self):
             found.append(ROBOT)
         for index, other in enumerate(self.nodes):
             if other.alive and self.discovered(other, t):
