@@ -18,6 +18,8 @@ from grader.recording import MessageCatalog, RecordingError
 from grader.runtime import frames
 
 
+# A silence's watchdog is moved on by the node's run-queue wait for at most this many silence limits.
+MAX_QUEUED_CREDIT = 2.0
 # The robot's base as a receiver of a node's publications (node subscribers are (node index, handle) pairs).
 ROBOT = "robot"
 
@@ -223,6 +225,7 @@ class NodeLink:
         self._check_every_s = check_every_s
         self._queued_s = queued_s
         self._queued_seen: float | None = None  # the node's run-queue wait at the last check of this silence
+        self._credited = 0.0  # run-queue wait credited to this silence so far
         self._partial = {1: bytearray(), 2: bytearray()}
         self.state = NodeState()
 
@@ -269,17 +272,21 @@ class NodeLink:
 
     def _credit_queued_time(self) -> None:
         """Move the watchdog on by the time the node spent runnable but waiting for a CPU since the last check: on a
-        machine busy with other work that is not the node's silence (counted from the silence's first check on)."""
+        machine busy with other work that is not the node's silence (counted from the silence's first check on).
+        At most MAX_QUEUED_CREDIT silence limits in all, so that a silence ends in bounded wall time on any load."""
         if self._queued_s is None:
             return
         queued = self._queued_s()
         if self._queued_seen is not None and queued > self._queued_seen:
-            self._deadline += queued - self._queued_seen
+            credit = min(queued - self._queued_seen, MAX_QUEUED_CREDIT * self._silent_wall_s - self._credited)
+            self._deadline += credit
+            self._credited += credit
         self._queued_seen = queued
 
     def _arm_watchdog(self) -> None:
         self._deadline = time.monotonic() + self._silent_wall_s
         self._queued_seen = None
+        self._credited = 0.0
 
     def _read(self) -> tuple[int, bytes]:
         try:

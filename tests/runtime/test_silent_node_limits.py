@@ -10,7 +10,7 @@ from collections.abc import Iterator
 import pytest
 
 from grader.recording import default_catalog
-from grader.runtime.node_link import NodeLink, NodeOverLimit, NodeSilent
+from grader.runtime.node_link import MAX_QUEUED_CREDIT, NodeLink, NodeOverLimit, NodeSilent
 
 CATALOG = default_catalog()
 
@@ -92,3 +92,15 @@ def test_time_a_starved_node_waits_for_a_cpu_is_not_its_silence(pipes) -> None:
     # Half of each second was the machine's: the watchdog needs 0.3 s of the node's own, about 0.6 s of wall time.
     assert time.monotonic() - started >= 0.5
 
+
+
+def test_on_any_load_a_silence_ends_within_its_limit_and_the_run_queue_credit(pipes) -> None:
+    """A node that waits for a CPU nearly all the time is still stopped: the run-queue wait moves the watchdog on by
+    at most MAX_QUEUED_CREDIT silence limits."""
+    link = NodeLink(*pipes, CATALOG, silent_wall_s=0.2, output_cap=1 << 20, check_every_s=0.02,
+                    queued_s=RunQueue(share=0.99))
+    started = time.monotonic()
+    with pytest.raises(NodeSilent):
+        link.run_until_wait(0, lambda event: None)
+    waited = time.monotonic() - started
+    assert (1 + MAX_QUEUED_CREDIT) * 0.2 - 0.05 <= waited < (1 + MAX_QUEUED_CREDIT) * 0.2 + 0.5
