@@ -25,6 +25,7 @@ CALLER_ID = "/rosgrade"
 ONCE_STAY_NS = 3_000_000_000  # rostopic pub -1 stays this long after publishing (its _ONCE_DELAY, 3 s)
 POLL_NS = 100_000_000  # ros2 topic pub checks for a matching subscription this often (DEFAULT_WAIT_TIME)
 KEEP_ALIVE_NS = 100_000_000  # ros2 topic pub stays this long after its last message (--keep-alive 0.1)
+ROS2_TOPIC_PUB_QOS = ("RELIABLE", "VOLATILE")  # ros2 topic pub's default profile (its --qos-* options are not modelled)
 
 
 
@@ -62,6 +63,7 @@ class PlannedPublication:
     poll_ns: int = POLL_NS  # while waiting: how often the command looks for a matching subscription
     register_ns: int | None = None  # when its publisher registers, relative to the start (None: at t_ns)
     make: Callable[[int], bytes | None] | None = None  # the bytes when they go out (None: ``data``; it: nothing)
+    qos: tuple[str, str] | None = None  # ROS 2: (reliability, durability) it offers; None (ROS 1): matches all
 
 
 def planned_publications(specs: list[PublicationSpec], wire: Wire) -> list[PlannedPublication]:
@@ -95,7 +97,7 @@ def _planned(index: int, spec: PublicationSpec, wire: Wire, callerid: str) -> Pl
     times = 1 if spec.once else spec.times or 0
     period = round(1e9 / (spec.rate or 1.0))
     return PlannedPublication(spec.t_ns, spec.topic, type_name, data, period, times, False, times != 0,
-                              KEEP_ALIVE_NS if times else None, callerid)
+                              KEEP_ALIVE_NS if times else None, callerid, qos=ROS2_TOPIC_PUB_QOS)
 
 
 class TopicPublisher:
@@ -106,7 +108,7 @@ class TopicPublisher:
         self._pub = planned
         begin = start_ns + planned.t_ns
         registered = begin if planned.register_ns is None else start_ns + planned.register_ns
-        self._endpoint = Endpoint(-1, planned.topic, planned.type, "", None, planned.latch, registered)
+        self._endpoint = Endpoint(-1, planned.topic, planned.type, "", None, planned.latch, registered, qos=planned.qos)
         if graph.discovery_ns:  # a new DDS participant: it and the nodes know each other after discovery
             self._endpoint.ready_ns = registered + graph.discovery_ns
         self._graph = graph

@@ -110,3 +110,19 @@ def test_a_service_call_fills_the_fields_it_does_not_give_as_the_cli_does() -> N
                                             request={"x": 2, "y": 2, "theta": 0.2})], wire)
     request = wire.catalog.decode("turtlesim/srv/Spawn_Request", call.call.request)
     assert (request.x, request.y, request.name) == (2.0, 2.0, "")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("durability, heard", [("VOLATILE", True), ("TRANSIENT_LOCAL", False)])
+def test_ros2_topic_pub_offers_the_default_qos(tmp_path: Path, durability: str, heard: bool) -> None:
+    """ros2 topic pub publishes RELIABLE and VOLATILE: a TRANSIENT_LOCAL subscription requests more than it offers
+    and hears nothing, as between two real rclpy nodes."""
+    listener = tmp_path / "listener.py"
+    listener.write_text((NODES / "rclpy_listener.py").read_text().replace(
+        ", 10)\n", f", rclpy.qos.QoSProfile(depth=10, durability=rclpy.qos.DurabilityPolicy.{durability}))\n")
+        .replace("import rclpy\n", "import rclpy\nimport rclpy.qos\n"))
+    scenario = Scenario(duration=4.0, publications=[_pub(0.0, "rate", "std_msgs/msg/String")])
+    run(RunSpec(scenario=scenario, nodes=(NodeSpec(script=listener, flavour="ros2"),)),
+        tmp_path / "run.mcap", tmp_path / "run.log")
+    lines = [line.text for line in Recording.open(tmp_path / "run.mcap").output_lines()]
+    assert any(text.startswith("heard rate") for text in lines) is heard, lines
