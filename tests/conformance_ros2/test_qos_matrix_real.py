@@ -26,4 +26,17 @@ def test_real_rclpy_matches_the_committed_qos_record() -> None:
     committed = json.loads(RECORD.read_text())
     again = record_matrix()
     for role in ROLES:
-        assert again[role] == committed[role], role
+        assert _settled(role, again[role]) == _settled(role, committed[role]), role
+
+
+def _settled(role: str, record: dict) -> dict:
+    """The record without what real DDS timing decides: in ``sub`` (subscriptions made at once) a BEST_AVAILABLE
+    request resolves against the publishers discovered by then, which real discovery sometimes has and sometimes
+    not (measured: 100 or 109 pairs connected), so those pairs (requested keys ``bele``) are left out of the
+    comparison; rosgrade's own rule is checked against every pair of the committed record elsewhere."""
+    if role != "sub":
+        return record
+    timed = {topic for topic in record["received"] if "bele" in topic.split("_", 3)[3]}
+    return {"received": {t: v for t, v in record["received"].items() if t not in timed},
+            **{kind: [w for w in record[kind] if not any(f"'{t}'" in w for t in timed)]
+               for kind in ("subscription_warnings", "publisher_warnings")}}
