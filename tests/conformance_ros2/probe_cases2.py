@@ -39,8 +39,6 @@ class Case:
     # (real_turtlesim2.py); `beside`: grader-provided nodes rosgrade runs with it (real turtlesim serves them itself).
     world: str = ""
     beside: tuple[str, ...] = ()
-    # A difference of rosgrade's measured here and not yet fixed (its comparison is an expected failure, saying why).
-    known_difference: str = ""
 
     @property
     def path(self) -> Path:
@@ -463,8 +461,5 @@ TURTLE_CASES = [
     ), stderr=(
         "[WARN] [<wall>] [p25_turtle_qos]: New subscription discovered on topic '/turtle1/cmd_vel', requesting "
         "incompatible QoS. No messages will be sent to it. Last incompatible policy: RELIABILITY",
-    ), known_difference=(
-        "rosgrade's world takes a best-effort publisher's commands (the turtle moves) and its rclpy does not warn: a "
-        "publisher is not checked against the world's subscription QoS (grader/nodelib's rclpy checks subscriptions "
-        "only)")),
+    )),
 ]

@@ -27,9 +27,6 @@ pytestmark = pytest.mark.slow
 INTERFACES = Path(os.environ.get("ROSGRADE_TURTLESIM_INTERFACES", "/tmp/rosgrade-turtlesim-interfaces/build/install"))
 MODEL = HERE / "real_turtlesim2.py"
 IDS = [c.id for c in TURTLE_CASES]
-# A measured difference not yet fixed: rosgrade's side fails as expected, and must (strict), until it is fixed.
-OURS_CASES = [pytest.param(c, id=c.id, marks=[pytest.mark.xfail(strict=True, reason=c.known_difference)]
-                           if c.known_difference else []) for c in TURTLE_CASES]
 
 
 def _real_reason() -> str | None:
@@ -71,7 +68,7 @@ def our_outputs(tmp_path_factory: pytest.TempPathFactory):
 
 
 @pytest.mark.realros
-@pytest.mark.parametrize("case", OURS_CASES)
+@pytest.mark.parametrize("case", TURTLE_CASES, ids=IDS)
 def test_turtlesim_same_as_real(case: Case, real_outputs: RealRuns, our_outputs: OurRuns) -> None:
     same_as_real(case, real_outputs, our_outputs.get(case), _differences, "rclpy beside a real-rclpy turtlesim")
 
@@ -82,6 +79,6 @@ def test_turtlesim_reference_real(case: Case, real_outputs: RealRuns) -> None:
     behaves_as_measured(case, "real", real_outputs.runs(case), _check_reference)
 
 
-@pytest.mark.parametrize("case", OURS_CASES)
+@pytest.mark.parametrize("case", TURTLE_CASES, ids=IDS)
 def test_turtlesim_reference_ours(case: Case, our_outputs: OurRuns) -> None:
     behaves_as_measured(case, "ours", [our_outputs.get(case)], _check_reference)
