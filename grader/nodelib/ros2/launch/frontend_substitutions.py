@@ -57,11 +57,12 @@ class _Reader:
     def peek(self, n: int = 1) -> str:
         return self.text[self.pos:self.pos + n]
 
-    def template(self, stop: str = "") -> list[Substitution]:
-        """Text and substitutions until `stop` (a quote), or the end."""
+    def template(self, ends: str = "") -> list[Substitution]:
+        """Text and substitutions until one of ``ends`` (a closing quote; a space or ')' after an argument), or the
+        end of the text."""
         parts: list[Substitution] = []
         buffer = ""
-        while self.pos < len(self.text) and self.peek() != stop if stop else self.pos < len(self.text):
+        while self.pos < len(self.text) and self.peek() not in ends:
             if self.peek(2) == "$(":
                 if buffer:
                     parts.append(TextSubstitution(text=buffer))
@@ -99,28 +100,12 @@ class _Reader:
         if self.peek() in ("'", '"'):
             quote = self.peek()
             self.pos += 1
-            value = self.template(stop=quote)
+            value = self.template(ends=quote)
             if self.peek() != quote:
                 raise SubstitutionSyntaxError(f"unclosed quote in {self.text!r}")
             self.pos += 1
             return value or [TextSubstitution(text="")]
-        parts: list[Substitution] = []
-        buffer = ""
-        while self.pos < len(self.text) and self.peek() not in " )":
-            if self.peek(2) == "$(":
-                if buffer:
-                    parts.append(TextSubstitution(text=buffer))
-                    buffer = ""
-                parts.append(self.substitution())
-            elif self.peek() == "\\" and self.pos + 1 < len(self.text):
-                buffer += self.text[self.pos + 1]
-                self.pos += 2
-            else:
-                buffer += self.peek()
-                self.pos += 1
-        if buffer:
-            parts.append(TextSubstitution(text=buffer))
-        return parts
+        return self.template(ends=" )")
 
 
 def parse_substitution(text: Any) -> list[Substitution]:
