@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Probe 20 (issue 33 item 1): what a node's start costs, and the first timer tick's message.
 
-The imports and rclpy.init take a few tenths of a second, then DDS discovery matches the node with the robot
+The imports and rclpy.init take 0.17-0.6 s (0.17-0.23 s with a warm file cache, measured on a 2-core CI machine;
+0.2 s was once too tight a bound there), then DDS discovery matches the node with the robot
 (bimodal in real rclpy: about 0.1 s, or about 3 s); /clock reaches the node only then. The 10 Hz timer made in
 __init__ fires at the first /clock, and its message (linear.y numbers the ticks) reaches the robot when the
 publisher matched with the /clock subscription, as it did in 22 of 23 real runs. time.monotonic() is wall time in
@@ -35,7 +36,7 @@ class Startup(Node):
         if self.ticks == 1:
             first = time.monotonic()
             print("#REF %.6f" % (self.get_clock().now().nanoseconds / 1e9))
-            print("imports and rclpy.init took at least 0.2 s", INIT - FIRST_LINE >= 0.2)
+            print("imports and rclpy.init took at least 0.1 s", INIT - FIRST_LINE >= 0.1)
             print("discovery before the first tick took at least 0.03 s", first - INIT >= 0.03)
             print("first tick within 4 s of the first line", first - FIRST_LINE < 4.0)
 
