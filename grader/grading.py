@@ -27,7 +27,7 @@ from grader.rubric import Node, Rubric, Scenario, load_rubrics
 from grader.rubricfile import RubricFile, load_rubric_files, stamp
 from grader.runtime import NodeSpec, RunSpec, ScriptNotFound, check_script, find_script
 from grader.runtime.client_library import (
-    ROS1, ROS2, client_library, entry_point, import_roots, package_findings,
+    ROS1, ROS2, client_library, entry_point, import_roots, package_findings, param_args,
 )
 from grader.runtime.confine import detect, package_folder
 from grader.runtime.int_fields import int_field_findings
@@ -133,10 +133,11 @@ def _node_spec(script: Path, node: Node, workspace: Workspace) -> NodeSpec:
     if flavour == ROS2:
         # rclpy reads remaps after --ros-args (`ros2 run pkg exe --ros-args -r cmd_vel:=/x`)
         remaps = [part for name, target in node.remaps.items() for part in ("-r", f"{name}:={target}")]
-        args = (*node.args, *(("--ros-args", *remaps) if remaps else ()))
+        args = (*node.args, *param_args(ROS2, node.params), *(("--ros-args", *remaps) if remaps else ()))
         return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace,
                         flavour=ROS2, entry=entry_point(script, workspace), import_roots=roots)
-    args = (*node.args, *(f"{name}:={target}" for name, target in node.remaps.items()))
+    remaps = [f"{name}:={target}" for name, target in node.remaps.items()]
+    args = (*node.args, *param_args(ROS1, node.params), *remaps)
     return NodeSpec(script=script.resolve(), args=tuple(args), stdin=node.stdin, ros_namespace=node.namespace,
                     import_roots=roots)
 
@@ -245,9 +246,17 @@ def _hidden_text(nodes: tuple[NodeSpec, ...], log: Path) -> list[str]:
             for index, spec in enumerate(nodes) if spec.output == "log" and node_log_path(log, index).exists()]
 
 
-def _typed(nodes: tuple[NodeSpec, ...], stdin: str | None) -> tuple[NodeSpec, ...]:
-    """The nodes with a scenario's stdin (other values typed in), or as they are when it gives none."""
-    return nodes if stdin is None else tuple(replace(spec, stdin=stdin) for spec in nodes)
+def _for_scenario(nodes: tuple[NodeSpec, ...], scenario: Scenario) -> tuple[NodeSpec, ...]:
+    """The nodes as one scenario runs them: its stdin typed into each (other values typed in), its node parameters
+    after the student nodes' own arguments, so that they win as a later ``_name:=``/``-p`` does."""
+    out = []
+    for spec in nodes:
+        if scenario.stdin is not None:
+            spec = replace(spec, stdin=scenario.stdin)
+        if scenario.node_params and not spec.provided:
+            spec = replace(spec, args=(*spec.args, *param_args(spec.flavour, scenario.node_params)))
+        out.append(spec)
+    return tuple(out)
 
 
 @dataclass
@@ -288,7 +297,7 @@ def _plan_task(folder: Path, rubric: Rubric, out_dir: Path) -> _TaskPlan | TaskR
     except _NoOwnType as exc:
         return TaskReport(id=rubric.id, title=rubric.title, status="error", max_score=rubric.max_score,
                           diagnostics=findings, message=str(exc))
-    runs = [Run(RunSpec(scenario=scenario, nodes=_typed(scenario_nodes, scenario.stdin), limits=rubric.limits,
+    runs = [Run(RunSpec(scenario=scenario, nodes=_for_scenario(scenario_nodes, scenario), limits=rubric.limits,
                         name=scenario.name, interfaces=interfaces),
                 task_dir / f"{scenario.name}.mcap", task_dir / f"{scenario.name}.log")
             for scenario, scenario_nodes in typed]

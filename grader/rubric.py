@@ -73,6 +73,10 @@ class Scenario(WorldScenario):
     # What this run asks for (e.g. the distance its stdin types): metric parameters of the same name, for every
     # criterion whose metric takes them; they override the criterion's own `params` on this scenario.
     params: dict[str, Any] = {}
+    # The student nodes' parameters in this run (MIT's wall follower tests vary side, distance and speed), given after
+    # each node's own args as a course's test passes them: rospy `_name:=value`, rclpy `--ros-args -p name:=value`.
+    # They are metric parameters of the same name too, under `params`, which override them.
+    node_params: dict[str, str | bool | int | float] = {}
 
 
 class Node(_Model):
@@ -81,6 +85,9 @@ class Node(_Model):
     script: str = Field(pattern=r"^[\w.-]+\.py$")
     aliases: list[str] = []
     args: list[str] = []
+    # The node's parameters, written for the client library it uses, after `args`: rospy `_name:=value`, rclpy
+    # `--ros-args -p name:=value` (a ROS 1 `_name:=value` would be a deprecated remap rule to rcl, warned of).
+    params: dict[str, str | bool | int | float] = {}
     stdin: str | None = None
     remaps: dict[str, str] = {}
     namespace: str | None = None  # ROS_NAMESPACE
@@ -257,7 +264,8 @@ class Criterion(_Model):
 
     def params_for(self, scenario: Scenario) -> MetricParams:
         """The metric's parameters on one scenario: the criterion's, overridden by the scenario's that it takes."""
-        taken = {k: v for k, v in scenario.params.items() if k in self._metric.params.model_fields}
+        asked = {**scenario.node_params, **scenario.params}
+        taken = {k: v for k, v in asked.items() if k in self._metric.params.model_fields}
         if not taken:
             return self._params
         return self._metric.params.model_validate({**self.params, **taken})

@@ -18,6 +18,10 @@ from grader.metrics.run import RunData
 from sim.scenario import Box, Cylinder
 
 
+# A robot this much nearer the wall on the other side is following that wall (the middle of a corridor is neither)
+OTHER_SIDE_MARGIN = 0.1
+
+
 class Params(TrajectoryParams):
     """The task's side and desired distance (as the node was told them), the score's alpha and the end zone."""
 
@@ -67,6 +71,7 @@ def measure(run: RunData, params: Params) -> Measurement:
     end = zones(run, [params.end_zone])[params.end_zone]
     side = 1 if params.side == "left" else -1
     distances: list[float] = []
+    nearer_other_side = 0  # samples where the other side's wall was clearly the nearer: following the wrong wall
     reached_at = math.nan
     next_t = -math.inf
     for t, x, y, yaw in zip(traj.t.tolist(), traj.x.tolist(), traj.y.tolist(), traj.yaw.tolist()):
@@ -75,6 +80,8 @@ def measure(run: RunData, params: Params) -> Measurement:
             break
         if t >= next_t:
             distances.append(wall_distance(x, y, yaw, side, run.obstacles, params.reach))
+            other = wall_distance(x, y, yaw, -side, run.obstacles, params.reach)
+            nearer_other_side += other + OTHER_SIDE_MARGIN < distances[-1]
             next_t = t + params.sample_period
     lost = sum(1 for d in distances if math.isinf(d))
     errors = [abs(d - params.desired_distance) if math.isfinite(d) else params.reach for d in distances]
@@ -83,10 +90,12 @@ def measure(run: RunData, params: Params) -> Measurement:
     return {
         "loss": loss,
         "mit_score": 1.0 / (params.alpha * loss + 1.0) if errors and not math.isnan(reached_at) else 0.0,
-        "mean_distance": sum(finite) / len(finite) if finite else math.nan,
+        "mean_distance": (mean := sum(finite) / len(finite) if finite else math.nan),
+        "mean_excess": mean - params.desired_distance,  # > 0: farther from the wall than asked
         "min_distance": min(finite, default=math.nan),
         "max_distance": max(finite, default=math.nan),
         "no_wall_fraction": lost / len(distances) if distances else math.nan,
+        "other_side_fraction": nearer_other_side / len(distances) if distances else math.nan,
         "side": params.side,
         "desired_distance": params.desired_distance,
         "reached_end": not math.isnan(reached_at),
@@ -97,7 +106,8 @@ def measure(run: RunData, params: Params) -> Measurement:
 METRIC = Metric(
     name="wall_following",
     params=Params,
-    quantities=frozenset({"loss", "mit_score", "mean_distance", "min_distance", "max_distance", "no_wall_fraction",
-                          "side", "desired_distance", "reached_end", "reached_end_at_s"}),
+    quantities=frozenset({"loss", "mit_score", "mean_distance", "mean_excess", "min_distance", "max_distance",
+                          "no_wall_fraction", "other_side_fraction", "side", "desired_distance", "reached_end",
+                          "reached_end_at_s"}),
     measure=measure,
 )

@@ -1,4 +1,5 @@
-"""Which client library a node script uses (rospy or rclpy), how `ros2 run` would start it, and what it may import.
+"""Which client library a node script uses (rospy or rclpy), how `ros2 run` would start it (and give it parameters),
+and what it may import.
 
 A script that imports rclpy is a ROS 2 node, one that imports rospy a ROS 1 node; a script that imports neither, or
 that does not parse (its import lines are then read as text), takes its package's (``package.xml``'s build type and
@@ -12,11 +13,15 @@ from __future__ import annotations
 
 import ast
 import importlib.util
+import json
 import re
 import stat
 import sys
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
+
+import yaml
 
 from grader.nodelib import import_roots as client_roots
 from grader.runtime.scripts import read_script
@@ -205,3 +210,21 @@ def package_findings(script: Path, entry: EntryPoint | None, workspace: Workspac
     elif package.build_type == "ament_cmake":
         notes += _ament_cmake_findings(script, package)
     return notes + _import_findings(script, ws)
+
+
+def param_args(flavour: str, params: Mapping[str, str | bool | int | float]) -> tuple[str, ...]:
+    """Command-line words that give a node these parameters: rospy's private ``_name:=value``, rclpy's
+    ``--ros-args -p name:=value``. Both read the value as YAML, so it is written as YAML: a string that YAML would take
+    for another type (``"1.0"``, ``"true"``) is quoted; the argv reaches the node with no shell to strip the quotes."""
+    def text(value: str | bool | int | float) -> str:
+        if isinstance(value, str):
+            try:
+                plain = yaml.safe_load(value) == value
+            except yaml.YAMLError:
+                plain = False
+            return value if plain else json.dumps(value)
+        return json.dumps(value)  # true/false, 3, 0.5: YAML reads JSON's scalars as their own type
+
+    if flavour == ROS2:
+        return ("--ros-args", *(word for name, value in params.items() for word in ("-p", f"{name}:={text(value)}")))
+    return tuple(f"_{name}:={text(value)}" for name, value in params.items())

@@ -17,7 +17,8 @@ pytestmark = pytest.mark.slow
 PACKAGE = Path(__file__).resolve().parents[2] / "reference_solutions_ros2" / "part3_lidar"
 TASKS = {"lidar_distance": ["arena_centre", "corridor", "turtlebot3_world"],
          "obstacle_avoidance": ["centre", "mirrored", "south"],
-         "wall_follower": ["corridor", "left_turn", "right_turn"]}
+         "wall_follower": ["corridor", "corridor_right", "left_turn", "left_turn_right_wall", "right_turn",
+                           "right_turn_right_wall"]}
 
 
 @pytest.fixture(scope="module")

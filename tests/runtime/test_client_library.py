@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from grader.runtime.client_library import ROS1, ROS2, client_library, entry_point, package_findings
+from grader.runtime.client_library import ROS1, ROS2, client_library, entry_point, package_findings, param_args
 from grader.runtime.scripts import check_script
 
 REFERENCE_PACKAGE = Path(__file__).resolve().parents[2] / "reference_solutions_ros2" / "part2_navigation"
@@ -78,7 +78,7 @@ def test_a_lone_script_has_no_entry_point_and_no_package_finding(tmp_path: Path)
 
 def test_setup_py_is_read_not_run(tmp_path: Path) -> None:
     marker = tmp_path / "ran"
-    script = _package(tmp_path / "pkg", "my_pkg", f"'move_circle = my_pkg.move_circle:main'")
+    script = _package(tmp_path / "pkg", "my_pkg", "'move_circle = my_pkg.move_circle:main'")
     setup = tmp_path / "pkg" / "setup.py"
     setup.write_text(f"open({str(marker)!r}, 'w').close()\n" + setup.read_text())
     assert entry_point(script) is not None and not marker.exists()
@@ -89,3 +89,15 @@ def test_rosrun_notes_only_for_ros1(tmp_path: Path) -> None:
     script.write_text("import rclpy\n")  # no shebang, not executable: fine for `ros2 run` and python3
     assert check_script(script, rosrun=False) == []
     assert len(check_script(script, rosrun=True)) == 2
+
+
+@pytest.mark.parametrize("value", ["right", "1.0", "true", "on", "a: b", "", "~", "x y", 0.5, 3, True, False, -1e-3])
+def test_param_args_give_the_value_back_as_yaml_reads_it(value) -> None:
+    import yaml
+
+    ros1 = param_args(ROS1, {"v": value})
+    ros2 = param_args(ROS2, {"v": value})
+    assert ros2[:2] == ("--ros-args", "-p") and ros1[0].startswith("_v:=")
+    for word in (ros1[0][len("_v:="):], ros2[2][len("v:="):]):
+        loaded = yaml.safe_load(word)
+        assert loaded == value and type(loaded) is type(value)

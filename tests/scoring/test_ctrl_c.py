@@ -89,9 +89,15 @@ def _motion(task: str, s: Scenario, x: float, y: float, yaw: float) -> list[Segm
     if task == "obstacle_avoidance":  # through the four corner zones, then turning on the spot until 90 s
         tour = _to(x, y, yaw, [(2.0, 2.0), (-2.0, 2.0), (-2.0, -2.0), (2.0, -2.0)], 0.22, 0.8)
         return [*tour, (90.0 - sum(d for d, _, _ in tour), 0.0, 0.5)]
-    if task == "wall_follower":  # 0.4 m from the left wall to the end zone, round the corner the course turns
-        turn = {"l_corridor": [(2.4, 0.2), (2.4, 2.5)], "l_corridor_mirrored": [(2.8, 0.2), (2.8, -2.5)]}
-        return _to(x, y, yaw, [(0.5, 0.2), *turn.get(s.world or "", [(3.5, 0.2)])], 0.2, 1.0)
+    if task == "wall_follower":  # the run's distance from its side's wall to the end zone, round the course's corner
+        asked = {"side": "left", "desired_distance": 0.4, **RUBRICS[task].nodes[0].params, **s.node_params}
+        d, left = float(asked["desired_distance"]), asked["side"] == "left"
+        lane = (0.6 - d) * (1 if left else -1)  # the corridors' wall faces are 0.6 m either side of the entrance
+        # after the corner: the inner wall's face is at x = 2.0, the outer one's at x = 3.2
+        inner, outer = 2.0 + d, 3.2 - d
+        turn = {"l_corridor": [((inner if left else outer), lane), ((inner if left else outer), 2.5)],
+                "l_corridor_mirrored": [((outer if left else inner), lane), ((outer if left else inner), -2.5)]}
+        return _to(x, y, yaw, [(0.5, lane), *turn.get(s.world or "", [(3.5, lane)])], 0.2, 1.0)
     if task == "lidar_distance":  # the grader turns the robot (the scenario's script); the node only prints
         return [(1.0, 0.0, 0.0), (4.0, 0.0, 0.3), (7.0, 0.0, -0.3)]
     if task == "figure_of_eight":  # two 1 m loops of 30 s each, anticlockwise then clockwise

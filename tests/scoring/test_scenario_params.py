@@ -80,3 +80,56 @@ def test_the_turtlesim_tasks_ask_in_each_scenario_what_its_stdin_types() -> None
     for scenario in rubrics["turtle_goal"].scenarios:
         stdin = scenario.stdin or rubrics["turtle_goal"].nodes[0].stdin
         assert [float(v) for v in stdin.split()] == [scenario.params["goal_x"], scenario.params["goal_y"]]
+
+
+WALL_RUBRIC = '''
+id = "follow"
+title = "Follow"
+robot = "turtlebot3_waffle"
+
+[[nodes]]
+script = "follow.py"
+
+[[scenarios]]
+name = "left"
+
+[[scenarios]]
+name = "right"
+node_params = {{ side = "right", desired_distance = 0.5, velocity = 0.3 }}
+{extra}
+
+[[criteria]]
+id = "distance"
+title = "Distance"
+points = 1
+metric = "wall_following"
+quantity = "mit_score"
+params = {{ side = "left", desired_distance = 0.4 }}
+tolerance = {{ bounds = [0.9, 1.0] }}
+'''
+
+
+def test_node_params_are_the_metric_parameters_of_the_same_name(tmp_path: Path) -> None:
+    path = tmp_path / "follow.toml"
+    path.write_text(WALL_RUBRIC.format(extra=""))
+    rubric = load_rubric(path)
+    left, right = (rubric.criteria[0].params_for(s) for s in rubric.scenarios)
+    assert (left.side, left.desired_distance) == ("left", 0.4)
+    # velocity is the node's alone: no metric takes it, and that is not a spelling error as in `params`
+    assert (right.side, right.desired_distance) == ("right", 0.5)
+
+
+def test_a_scenario_params_overrides_its_node_params_for_the_metric(tmp_path: Path) -> None:
+    path = tmp_path / "follow.toml"
+    path.write_text(WALL_RUBRIC.format(extra="params = { desired_distance = 0.45 }"))
+    right = load_rubric(path).criteria[0].params_for(load_rubric(path).scenarios[1])
+    assert (right.side, right.desired_distance) == ("right", 0.45)
+
+
+def test_the_wall_follower_runs_vary_side_distance_and_speed_as_mits_tests_do() -> None:
+    runs = load_rubrics()["wall_follower"].scenarios
+    asked = {(s.node_params.get("side", "left"), s.node_params.get("desired_distance", 0.4),
+              s.node_params.get("velocity", 0.2)) for s in runs}
+    assert len(runs) == 6 and len(asked) == 4
+    assert {side for side, _, _ in asked} == {"left", "right"}
+    assert len({world for world in (s.world for s in runs)}) == 3

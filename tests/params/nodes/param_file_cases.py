@@ -172,6 +172,15 @@ CASES = [
                                 "-p", "f:=[a, 'b']", "-p", "g:=0o10", "-p", "h:=yes", "-p", "i:=[]", "-p", "j:=~",
                                 "-p", "k:=1e3", "-p", "nested.name:=x"]},
     {"id": "p_empty_value", "args": ["--ros-args", "-p", "d:="]},
+    # A scenario's node parameters come after the node's own args, in a --ros-args section of their own.
+    {"id": "p_later_section_wins", "args": ["--ros-args", "-p", "a:=left", "-p", "b:=0.4", "-r", "x:=y",
+                                            "--ros-args", "-p", "a:=right", "-p", "b:=0.5", "-p", 's:="1.0"',
+                                            "-p", 't:="on"']},
+    {"id": "p_after_non_ros_args", "args": ["_a:=left", "--ros-args", "-p", "a:=x", "--", "plain",
+                                            "--ros-args", "-p", "a:=right"]},
+    # rcl still takes a ROS 1 style `from:=to` outside --ros-args as a remap rule, with a warning, when it is one.
+    {"id": "deprecated_remap_rules", "args": ["_a:=left", "_b:=0.4", "c:=/d/e", "f:=~/g", "h:=i:=j", "k/*:=m",
+                                              "rostopic://n:=o", "p:q:=r", "s:=", ":=t", "plain"]},
     {"id": "p_map_value", "args": ["--ros-args", "-p", "d:={x: 1}"]},
     {"id": "p_bad_yaml", "args": ["--ros-args", "-p", "d:=[1, 2"]},
     {"id": "p_then_file_other_type", "files": ["/**:\n  ros__parameters:\n    a: x\n"],

@@ -27,7 +27,8 @@ _LOCAL = "Failed to parse ROS arguments: "
 _ARGUMENTS_C = "/project/src/rcl/arguments.c"
 _LEXER_C = "/project/src/rcl/lexer_lookahead.c"
 # rcl's lexeme kinds (rcl/lexer.h), as its errors number them.
-_NONE, _EOF, _COLON, _SEPARATOR, _TOKEN, _SLASH, _WILD_ONE, _WILD_MULTI, _DOT = 0, 1, 5, 8, 18, 19, 20, 21, 22
+_NONE, _EOF, _TILDE_SLASH, _URL_SERVICE, _URL_TOPIC, _COLON = 0, 1, 2, 3, 4, 5
+_NODE, _NS, _SEPARATOR, _TOKEN, _SLASH, _WILD_ONE, _WILD_MULTI, _DOT = 6, 7, 8, 18, 19, 20, 21, 22
 # What rcl calls each flag's value in its refusal, and where it words it.
 _KINDS = {"-p": ("parameter override rule", 352), "--param": ("parameter override rule", 352),
           "--params-file": ("params file", 415), "-r": ("remap rule", 380), "--remap": ("remap rule", 380),
@@ -79,7 +80,8 @@ class _Lexemes:
     # rcl's lexer (rcl/src/rcl/lexer.c) as one pattern, longest lexeme first; a token has no '__' in it.
     _PATTERN = re.compile(r"(:=)|(:)|(\.)|(/)|(\*\*)|(\*)|(__(?:node|name))|(__ns)|(~/)|(rosservice://)|"
                           r"(rostopic://)|\\([1-9])|((?:[A-Za-z]|_(?!_))(?:[A-Za-z0-9]|_(?!_))*_?)")
-    _KINDS = (_SEPARATOR, _COLON, _DOT, _SLASH, _WILD_MULTI, _WILD_ONE, 6, 7, 2, 3, 4, 9, _TOKEN)
+    _KINDS = (_SEPARATOR, _COLON, _DOT, _SLASH, _WILD_MULTI, _WILD_ONE, _NODE, _NS, _TILDE_SLASH, _URL_SERVICE,
+              _URL_TOPIC, 9, _TOKEN)
 
     def __init__(self, text: str) -> None:
         self.text, self.index = text, 0
@@ -140,6 +142,47 @@ def _param_rule(rule: str) -> tuple[str, str, str]:
     return node, name, rule[lexemes.index:]
 
 
+def _deprecated_remap(arg: str) -> tuple[str, str, str] | None:
+    """A ``from:=to`` outside ``--ros-args`` that rcl still takes as a remap rule (the ROS 1 form, which it warns
+    of), as (node or '', from, to); None when rcl's remap grammar does not read it as one, and it stays the
+    program's (``_rate:=0.4``: a number is no name)."""
+    lex = _Lexemes(arg)
+
+    def take(*kinds: int) -> bool:
+        if lex.peek()[0] in kinds:
+            lex.accept()
+            return True
+        return False
+
+    def name() -> bool:  # token (/ token)*, after an optional ~/ or /
+        take(_TILDE_SLASH, _SLASH)
+        if not take(_TOKEN):
+            return False
+        while take(_SLASH):
+            if not take(_TOKEN):
+                return False
+        return True
+
+    node = ""
+    if lex.peek()[0] == _TOKEN and lex.peek(1)[0] == _COLON:
+        node = lex.accept()
+        lex.accept()
+    start = lex.index
+    if take(_NODE):
+        valid = take(_SEPARATOR) and take(_TOKEN)
+    elif take(_NS):
+        valid = take(_SEPARATOR) and take(_SLASH)
+        while valid and take(_TOKEN, _SLASH):
+            pass
+    else:
+        take(_URL_SERVICE, _URL_TOPIC)
+        valid = name() and take(_SEPARATOR) and name()
+    if not valid or lex.peek()[0] != _EOF:
+        return None
+    source, _, target = arg[start:].partition(":=")
+    return node, source, target
+
+
 def parse(argv: list[str], *, at_init: bool = True) -> RosArgs:
     """Split ``argv`` into ROS arguments (after ``--ros-args``, up to ``--``) and the rest, reading parameter files
     and ``-p`` values in order. A refused argument raises what rclpy raises, with rcl's text: RCLError at rclpy.init
@@ -154,7 +197,13 @@ def parse(argv: list[str], *, at_init: bool = True) -> RosArgs:
             in_ros = True
             continue
         if not in_ros:
-            out.non_ros.append(arg)
+            rule = _deprecated_remap(arg)
+            if rule is None:
+                out.non_ros.append(arg)
+            else:
+                get_logger("rcl").warn(f"Found remap rule '{arg}'. This syntax is deprecated. Use '--ros-args "
+                                       f"--remap {arg}' instead.")
+                out.remaps.append(rule)
             continue
         if arg == "--":
             in_ros = False
