@@ -5,7 +5,8 @@ one (``turtle_teleop_key_ros2.py``), as ``ros2 run turtlesim turtle_teleop_key``
 teleop sends its rotate keys (G B V C D E R T, F to cancel) to turtlesim's ``rotate_absolute`` action, which a grader
 node serves beside the world (``turtlesim_rotate_absolute.py``): it is started with the teleop when the rubric does not
 start it already, since in a real run turtlesim itself would serve it. A launch file's ``turtle_teleop_key`` or
-``mimic`` of package turtlesim runs the shipped script that stands for it (``TURTLESIM_EXECUTABLES``), the same way.
+``mimic`` of package turtlesim (roslaunch's or ROS 2 launch's) runs the shipped script that stands for it
+(``TURTLESIM_EXECUTABLES``), the same way: ``turtle_mimic.py`` (Noetic's) or ``turtle_mimic_ros2.py`` (Jazzy's).
 """
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ from grader.workspace import Workspace
 ROS2_SUFFIX = "_ros2"  # turtle_teleop_key.py -> turtle_teleop_key_ros2.py
 ROS2_TELEOP = f"turtle_teleop_key{ROS2_SUFFIX}.py"
 ROTATE_SERVER = "turtlesim_rotate_absolute.py"  # what Jazzy's turtlesim serves as /turtle1/rotate_absolute
-# turtlesim's executables a launch file may start that the grader ships (`ros2 run turtlesim <executable>`)
+# turtlesim's executables a launch file may start that the grader ships (`rosrun`/`ros2 run turtlesim <executable>`)
 TURTLESIM_EXECUTABLES = {"turtle_teleop_key": "turtle_teleop_key.py", "mimic": "turtle_mimic.py"}
 
 

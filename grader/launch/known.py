@@ -10,6 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import PurePosixPath
 
+from grader.provided_nodes import TURTLESIM_EXECUTABLES
+
 SHARE = PurePosixPath("/opt/ros/noetic/share")
 
 
@@ -53,7 +55,7 @@ WORLD_FILES: dict[tuple[str, str], WorldFile] = {
 }
 SIMULATED_PACKAGES = {package for package, _ in WORLD_FILES}
 # Packages with nodes the grader provides but no files: <node pkg=...> works, $(find ...) does not.
-NODE_PACKAGES = {"turtlesim": ("turtlesim_node", "turtle_teleop_key")}
+NODE_PACKAGES = {"turtlesim": ("turtlesim_node", *TURTLESIM_EXECUTABLES)}
 
 
 def package_path(name: str) -> str:

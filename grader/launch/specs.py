@@ -3,8 +3,8 @@
 roslaunch finds ``type`` as an executable file anywhere in package ``pkg``; the usual mistakes (a ``pkg`` that is
 the folder's name rather than package.xml's, a ``type`` without ``.py``, a script without ``chmod +x``) get a
 message that says what roslaunch would have said and what to change. turtlesim's nodes are the grader's
-(``grader.launch.turtlesim``): ``turtlesim_node`` is the world, not a process, and ``turtle_teleop_key`` runs the
-grader's script.
+(``grader.launch.turtlesim``): ``turtlesim_node`` is the world, not a process, and ``turtle_teleop_key`` and ``mimic``
+run the grader's rospy scripts (``grader.provided_nodes``) with the launch file's name, namespace and remaps.
 """
 from __future__ import annotations
 
@@ -15,6 +15,9 @@ from pathlib import Path
 
 from grader.launch import known, turtlesim
 from grader.launch.model import Launch, LaunchError, LaunchNode
+from grader.provided_nodes import launched_script
+from grader.rubric import GRADER_NODES
+from grader.runtime.client_library import ROS1
 from grader.runtime.scripts import SKIPPED_DIRS, candidates
 from grader.runtime.spec import NodeSpec
 
@@ -69,12 +72,13 @@ def _script(node: LaunchNode, folder: Path, allow_not_executable: bool) -> tuple
 
 
 def _provided(node: LaunchNode) -> Path:
-    """The grader's script for a node of a package whose nodes it provides (only turtle_teleop_key runs as one)."""
-    if node.type == turtlesim.TELEOP_NODE:
-        return turtlesim.TELEOP_SCRIPT
-    nodes = " and ".join(known.NODE_PACKAGES[node.pkg])
+    """The grader's script for a node of a package whose nodes it provides (turtle_teleop_key, mimic: Noetic's)."""
+    script = launched_script(node.pkg, node.type, ROS1)
+    if script is not None:
+        return GRADER_NODES / script
+    *some, last = known.NODE_PACKAGES[node.pkg]
     raise LaunchError(f"{node.where}: node {node.name}: type=\"{node.type}\" is not a node of {node.pkg} the grader "
-                      f"provides; it provides {nodes}")
+                      f"provides; it provides {', '.join(some)} and {last}")
 
 
 def node_specs(launch: Launch, packages: Mapping[str, Path], stdin: str | None = None,

@@ -1,42 +1,40 @@
 #!/usr/bin/env python3
-"""turtlesim's ``mimic`` for ROS 2 runs graded by rosgrade (the launch tutorial's turtlesim_mimic_launch.py starts it):
-the node ``turtle_mimic`` subscribes to ``input/pose`` (turtlesim/msg/Pose) and, for each pose, publishes on
-``output/cmd_vel`` a Twist of that pose's velocities (linear.x = linear_velocity, angular.z = angular_velocity), with
-turtlesim's topic QoS (reliable, depth 7), as ros/ros_tutorials rolling 1.8.2 ``turtlesim/tutorials/mimic.cpp`` does.
-Remapped from the launch file (``input/pose`` to one turtle's pose, ``output/cmd_vel`` to another's cmd_vel), the second
-turtle drives as the first does.
+"""turtlesim's ``mimic`` for ROS 1 runs graded by rosgrade (the roslaunch tutorial's turtlemimic.launch starts it): for
+each pose it hears, it publishes a Twist of that pose's velocities (linear.x = linear_velocity, angular.z =
+angular_velocity), as Noetic's turtlesim 0.10.2 ``tutorials/mimic.cpp`` does. Its default name is ``turtle_mimic``;
+both queues hold one message.
+
+The C++ node subscribes through ``ros::NodeHandle("input")`` and publishes through ``ros::NodeHandle("output")``. roscpp
+resolves and remaps a NodeHandle's namespace itself, then the full topic name again, so the tutorial's
+``<remap from="input" to="turtlesim1/turtle1"/>`` moves ``input/pose`` to ``turtlesim1/turtle1/pose`` (and a remap of
+``input/pose`` works too). rospy remaps whole names only, so this node resolves the two namespaces first, the same way.
 
 Shipped with the grader and run confined like a student's node; never student code.
 """
-import rclpy
+import rospy
 from geometry_msgs.msg import Twist
-from rclpy.executors import ExternalShutdownException
-from rclpy.node import Node
-from rclpy.qos import QoSProfile, ReliabilityPolicy
 from turtlesim.msg import Pose
 
+QUEUE_SIZE = 1  # mimic.cpp: advertise(..., 1) and subscribe(..., 1)
 
-class Mimic(Node):
 
-    def __init__(self):
-        super().__init__("turtle_mimic")
-        qos = QoSProfile(depth=7, reliability=ReliabilityPolicy.RELIABLE)  # turtlesim's topic_qos()
-        self.publisher = self.create_publisher(Twist, "output/cmd_vel", qos)
-        self.create_subscription(Pose, "input/pose", self.on_pose, qos)
-
-    def on_pose(self, pose):
-        twist = Twist()
-        twist.angular.z = pose.angular_velocity
-        twist.linear.x = pose.linear_velocity
-        self.publisher.publish(twist)
+def topic_in(namespace, name):
+    """``name`` under ``namespace`` resolved and remapped as roscpp's ``NodeHandle(namespace)`` resolves it."""
+    return rospy.resolve_name(namespace).rstrip("/") + "/" + name
 
 
 def main():
-    rclpy.init()
-    try:
-        rclpy.spin(Mimic())
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
+    rospy.init_node("turtle_mimic")
+    publisher = rospy.Publisher(topic_in("output", "cmd_vel"), Twist, queue_size=QUEUE_SIZE)
+
+    def on_pose(pose):
+        twist = Twist()
+        twist.angular.z = pose.angular_velocity
+        twist.linear.x = pose.linear_velocity
+        publisher.publish(twist)
+
+    rospy.Subscriber(topic_in("input", "pose"), Pose, on_pose, queue_size=QUEUE_SIZE)
+    rospy.spin()
 
 
 if __name__ == "__main__":

@@ -58,7 +58,7 @@ def test_the_r_key_turns_the_turtle_to_1_5708_through_the_action(tmp) -> None:
 
 
 def test_mimic_drives_turtle2_as_turtle1_drives(tmp) -> None:
-    mimic = NodeSpec(script=NODES / "turtle_mimic.py", flavour="ros2",
+    mimic = NodeSpec(script=NODES / "turtle_mimic_ros2.py", flavour="ros2",
                      args=("--ros-args", "-r", "input/pose:=/turtle1/pose", "-r", "output/cmd_vel:=/turtle2/cmd_vel"))
     data = _run(tmp, "mimic", NodeSpec(script=HERE / "turtlesim_ros2_nodes" / "spawn_and_lead_ros2.py",
                                        flavour="ros2"), mimic)

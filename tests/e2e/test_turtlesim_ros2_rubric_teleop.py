@@ -1,7 +1,8 @@
 """A rubric's [[grader_nodes]] start turtlesim's own nodes as the run's ROS version has them: `turtle_teleop_key.py`
 in an rclpy run is Jazzy's teleop (grader/nodes/turtle_teleop_key_ros2.py), its keys typed from the scenario's stdin,
 with the rotate_absolute server its rotate keys need started beside it; a rospy run keeps Noetic's teleop. `mimic`
-(turtle_mimic.py, ROS 2 only) is started with the remaps the rubric gives, as the launch tutorial's file does.
+(turtle_mimic.py; turtle_mimic_ros2.py in an rclpy run) is started with the remaps the rubric gives, as the launch
+tutorial's file does.
 
 Jazzy's teleop_turtle_key.cpp (ros/ros_tutorials rolling 1.8.2, what Jazzy ships; the snapshot has no jazzy branch)
 sends `r` as a RotateAbsolute goal of 1.5708 and `c` as -2.3562 (lines 250-268); turtle.cpp turns the turtle at 1 rad/s
@@ -42,7 +43,9 @@ def test_a_ros2_run_gets_jazzy_teleop_and_the_rotate_server_a_ros1_run_noetic_te
         ("turtle_teleop_key_ros2.py", "ros2", True), ("turtlesim_rotate_absolute.py", "ros2", True)]
     ros1 = provided_specs(teleop, "ros1", read_workspace(tmp_path))
     assert [(s.script.name, s.flavour) for s in ros1] == [("turtle_teleop_key.py", "ros1")]
-    assert script_for("turtle_mimic.py", "ros2") == "turtle_mimic.py"  # no variant: as named
+    assert script_for("turtle_mimic.py", "ros2") == "turtle_mimic_ros2.py"
+    assert script_for("turtle_mimic.py", "ros1") == "turtle_mimic.py"
+    assert script_for("number_game_server.py", "ros2") == "number_game_server.py"  # no variant: as named
 
 
 def test_a_rubric_listing_the_rotate_server_gets_it_once(tmp_path) -> None:

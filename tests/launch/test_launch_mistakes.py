@@ -96,8 +96,9 @@ def test_xml_syntax_error_names_the_line(package, tmp_path):
 
 
 @pytest.mark.parametrize(("node", "says"), [
-    ('<node pkg="turtlesim" type="mimic" name="mimic"/>',
-     'type="mimic" is not a node of turtlesim the grader provides; it provides turtlesim_node and turtle_teleop_key'),
+    ('<node pkg="turtlesim" type="draw_square" name="square"/>',
+     'type="draw_square" is not a node of turtlesim the grader provides; it provides turtlesim_node, '
+     'turtle_teleop_key and mimic'),
     ('<node pkg="turtlebot3_teleop" type="turtlebot3_teleop_key" name="teleop"/>',
      "package turtlebot3_teleop is not available in the grader"),
 ])

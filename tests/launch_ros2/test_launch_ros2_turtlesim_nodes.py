@@ -69,7 +69,7 @@ def test_mimic_gets_the_launch_tutorials_remappings_and_no_rotate_server(tmp_pat
         Node(package='turtlesim', executable='mimic', name='mimic',
              remappings=[('/input/pose', '/turtle1/pose'), ('/output/cmd_vel', '/turtle2/cmd_vel')]),
         Node(package='lab2_turtlesim', executable='pubvel'),""")
-    assert [(s.script.name, s.provided) for s in specs] == [("turtle_mimic.py", True), ("pubvel.py", False)]
+    assert [(s.script.name, s.provided) for s in specs] == [("turtle_mimic_ros2.py", True), ("pubvel.py", False)]
     assert specs[0].args == ("--ros-args", "-r", "__node:=mimic", "-r", "/input/pose:=/turtle1/pose",
                              "-r", "/output/cmd_vel:=/turtle2/cmd_vel")
 
