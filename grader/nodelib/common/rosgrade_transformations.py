@@ -419,8 +419,8 @@ def superimposition_matrix(v0, v1, scaling=False, usesvd=True):
              (yz - zy, xx - yy - zz, xy + yx, zx + xz),
              (zx - xz, xy + yx, -xx + yy - zz, yz + zy),
              (xy - yx, zx + xz, yz + zy, -xx - yy + zz))
-        values, vectors = numpy.linalg.eig(N)
-        q = vectors[:, numpy.argmax(values)]  # (w, x, y, z) of the best rotation
+        values, vectors = numpy.linalg.eig(N)  # N is symmetric: real, though NumPy >= 2.5 types them complex
+        q = numpy.real(vectors[:, numpy.argmax(numpy.real(values))])  # (w, x, y, z) of the best rotation
         q /= vector_norm(q)
         M = quaternion_matrix(numpy.roll(q, -1))
     if scaling:
