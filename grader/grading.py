@@ -200,7 +200,8 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:
         if name not in launch.args:
             findings.append(f"{found[0].name} declares no <arg name=\"{name}\">, so roslaunch ignored the "
                             f"task's {name}:={value}: declare it and use $(arg {name}) where the value is needed.")
-    findings += turtlesim.check_robot(launch, turtlesim.world_node(launch), rubric.robot)
+    world_node = turtlesim.world_node(launch)
+    findings += turtlesim.check_robot(launch, world_node, rubric.robot)
     for world in launch.worlds:
         if world.robot != rubric.robot:
             findings.append(f"{world.where}: {world.package}/{world.file} starts a {world.robot}, but this task is "
@@ -209,7 +210,9 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:
     scripts = list(dict.fromkeys(spec.script for spec in nodes if not spec.provided))
     for script in scripts:
         findings += check_script(script)
-    return (nodes, findings, [found[0], *scripts]), LaunchActs()
+    acts = LaunchActs() if world_node is None else \
+        LaunchActs(turtlesim_windows=world_node.windows, world_names=world_node.world_names)
+    return (nodes, findings, [found[0], *scripts]), acts
 
 
 def _launch_package(folder: Path, pattern: str) -> Path:

@@ -7,8 +7,9 @@ from sim.samples import (ColorSample, CommandSample, GroundTruthSample, ImuSampl
                          WorldService, WorldTopic)
 from sim.scenario import Imperfections, Pose2D, Scenario, ScriptedCommand
 from sim.turtlesim import TurtlesimError, TurtlesimWorld
+from sim.turtlesim_windows import TurtlesimWindows
 from sim.world import SimError, World
-from sim.worlds import WORLD_NODE_NAMES, open_world
+from sim.worlds import WORLD_NODE_NAMES, AnyWorld, open_world
 
 __all__ = [
     "ColorSample",
@@ -16,6 +17,8 @@ __all__ = [
     "TurtlePoseSample",
     "TurtlesimError",
     "TurtlesimWorld",
+    "TurtlesimWindows",
+    "AnyWorld",
     "open_world",
     "WORLD_NODE_NAMES",
     "CommandSample",

@@ -159,6 +159,7 @@ class WorldTopic:
     ``to_nodes``: delivered to subscribing nodes (False: recorded for the grader only, like the ground truth).
     ``shared``: nodes may publish there too (``/tf``); on any other world topic a node's messages are ignored.
     ``qos``: what a ROS 2 node's subscription must be compatible with (rosgrade_qos names).
+    ``node``: the world's node that publishes it, when the world stands for several ('': its ``node_name``).
     """
 
     topic: str
@@ -167,6 +168,7 @@ class WorldTopic:
     to_nodes: bool = True
     shared: bool = False
     qos: tuple[str, str] = DEFAULT_QOS  # ROS 2: (reliability, durability) the world's publisher offers
+    node: str = ""
 
 
 @dataclass(frozen=True, slots=True)

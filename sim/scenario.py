@@ -195,6 +195,20 @@ class PublicationSpec(_Model):
         return seconds_to_ns(self.t)
 
 
+class TurtlesimWindow(_Model):
+    """A further turtlesim window in the run: a launch file's second turtlesim_node (the launch tutorials' two
+    turtlesims and mimic). Its topics and services live in its node's namespace, its parameters under its node."""
+
+    node: str = Field(pattern=r"^(/[A-Za-z][\w]*)+$", description="the node's full name, e.g. /turtlesim2/sim")
+    params: dict[str, JsonValue] = Field(default_factory=dict,
+                                         description="the parameters the node starts with, by name")
+
+    @property
+    def namespace(self) -> str:
+        """The node's namespace, where its names resolve ('' for the root)."""
+        return self.node.rpartition("/")[0]
+
+
 class Scenario(_Model):
     """One run: the world starts at ``start_time`` (it has been running since 0) and lasts ``duration`` seconds after it."""
 
@@ -223,6 +237,9 @@ class Scenario(_Model):
     world_params: dict[str, JsonValue] = Field(
         default_factory=dict, description="parameters the world's node starts with, by name, as a launch file's "
         "parameters for turtlesim_node give them (e.g. {background_r = 255}); a name it does not declare is ignored")
+    turtlesim_windows: list[TurtlesimWindow] = Field(
+        default_factory=list, description="turtlesim windows besides the first (whose names are turtlesim's own, "
+        "/turtle1/cmd_vel...), each in its node's namespace; a robot world has none")
     command_types: list[str] | None = Field(
         None, description="velocity command types the robot's base takes, e.g. ['geometry_msgs/Twist', "
         "'geometry_msgs/TwistStamped']; None: what the robot takes from the run's client library (turtlesim: "
@@ -250,14 +267,15 @@ class Scenario(_Model):
 
     @model_serializer(mode="wrap")
     def _dump(self, handler: SerializerFunctionWrapHandler) -> dict:
-        """Without an unset world or start (or no publications), so a scenario without them is recorded as it always
-        was."""
+        """Without an unset world or start (or no publications, other turtlesim windows or node parameters), so a
+        scenario without them is recorded as it always was."""
         dumped = handler(self)
         for key in ("world", "start"):
             if dumped.get(key, "") is None:
                 del dumped[key]
-        if dumped.get("publications") == []:  # likewise without publications, which came later
-            del dumped["publications"]
+        for key in ("publications", "turtlesim_windows", "node_params"):  # likewise without those that came later
+            if key in dumped and not dumped[key]:
+                del dumped[key]
         return dumped
 
     @property

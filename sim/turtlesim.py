@@ -20,6 +20,11 @@ transparent path image, white where no pen painted since the last clear (turtle.
 and a taken name is refused as "A turtle named [...]" (noetic: "A turtled named"). The background parameters are
 Jazzy's declared integers; a change made through the world (``set_parameter``) shows at once, as Jazzy repaints on
 every parameter event of its own node, where noetic waits for /clear.
+
+A run may have further windows (``TurtlesimWindows``): a launch file that starts turtlesim_node twice, as the
+launch tutorials' turtlesim_mimic does. The first window has turtlesim's own names; each other (``TurtlesimWindow``)
+is a world of its own under its node's name and namespace (``/turtlesim2/sim``: ``/turtlesim2/turtle1/cmd_vel``,
+``/turtlesim2/spawn``, ``/turtlesim2/sim/background_r``), with no scripted commands, start pose or ground truth.
 """
 from __future__ import annotations
 
@@ -33,7 +38,7 @@ from typing import Protocol
 
 from sim.samples import (DEFAULT_QOS, ColorSample, CommandSample, GroundTruthSample, LogSample, Sample, ServiceResult,
                          TurtlePoseSample, WorldService, WorldTopic)
-from sim.scenario import Scenario, ScenarioTimes
+from sim.scenario import Scenario, ScenarioTimes, TurtlesimWindow
 from sim import turtlesim_params
 from sim.turtle_canvas import CANVAS_PX, DEFAULT_BACKGROUND, METER_PX, Canvas, Rgb
 
@@ -57,7 +62,6 @@ INFO = 2
 ERROR = 8
 # turtlesim's private parameters for the background colour (turtle_frame.cpp); DEFAULT_BACKGROUND holds their defaults.
 BACKGROUND_PARAMS = tuple(f"{NODE_NAME}/background_{c}" for c in "rgb")
-HOLONOMIC_PARAM = f"{NODE_NAME}/holonomic"  # Jazzy's turtle_frame.cpp declares it, false
 ROS2 = "ros2"
 # What a C++ double-to-int conversion gives on x86 for NaN and values out of int's range.
 _INT_INDEFINITE = -(1 << 31)
@@ -90,13 +94,13 @@ def roscpp_int(value: object, default: int) -> int:
     return rounded if -(1 << 31) <= rounded < (1 << 31) else _INT_INDEFINITE
 
 
-def background(params: Parameters | None) -> Rgb:
-    """turtle_frame.cpp's ``clear()`` colour: each channel from its parameter (default when unusable), then
-    ``qRgb``, which keeps the low 8 bits."""
+def background(params: Parameters | None, node: str = NODE_NAME) -> Rgb:
+    """turtle_frame.cpp's ``clear()`` colour: each channel from its parameter of ``node`` (default when unusable),
+    then ``qRgb``, which keeps the low 8 bits."""
     if params is None:
         return DEFAULT_BACKGROUND
-    return tuple(roscpp_int(params.get(name), default) & 0xFF
-                 for name, default in zip(BACKGROUND_PARAMS, DEFAULT_BACKGROUND))
+    return tuple(roscpp_int(params.get(f"{node}/background_{channel}"), default) & 0xFF
+                 for channel, default in zip("rgb", DEFAULT_BACKGROUND))
 
 
 class TurtlesimError(Exception):
@@ -119,11 +123,12 @@ class Turtle:
     pen_width: int = DEFAULT_PEN_WIDTH
     pen_on: bool = True
     teleports: list[tuple[bool, float, float, float]] = field(default_factory=list)  # (relative, a, b, θ)
+    node: str = NODE_NAME  # the turtlesim node it lives in, whose namespace its names resolve in
 
     @classmethod
-    def spawned(cls, name: str, x: float, y: float, theta: float) -> Turtle:
+    def spawned(cls, name: str, x: float, y: float, theta: float, node: str = NODE_NAME) -> Turtle:
         """A new turtle where ``spawnTurtle`` puts it: canvas (x, y up) to screen (x, height − y), not clamped."""
-        return cls(name, x, CANVAS_M - y, theta)
+        return cls(name, x, CANVAS_M - y, theta, node=node)
 
     @property
     def y(self) -> float:
@@ -170,11 +175,12 @@ class Turtle:
     @cached_property
     def namespace(self) -> str:
         """Where its topics and services live: its name resolved in turtlesim's namespace, as ros::NodeHandle does
-        (``turtle2`` → ``/turtle2``, ``~t`` → ``/turtlesim/t``)."""
+        (``turtle2`` → ``/turtle2``, ``~t`` → ``/turtlesim/t``; in window ``/turtlesim2/sim``, ``/turtlesim2/turtle2``)."""
         if self.name.startswith("~"):
-            resolved = f"{NODE_NAME}/{self.name[1:]}"
+            resolved = f"{self.node}/{self.name[1:]}"
         else:
-            resolved = self.name if self.name.startswith("/") else f"/{self.name}"
+            namespace = self.node.rpartition("/")[0]
+            resolved = self.name if self.name.startswith("/") else f"{namespace}/{self.name}"
         while "//" in resolved:
             resolved = resolved.replace("//", "/")
         return resolved.rstrip("/") or "/"
@@ -187,9 +193,12 @@ class Turtle:
 class TurtlesimWorld(ScenarioTimes):
     """One run of turtlesim: ``command`` a turtle, ``advance_to`` a time, collect what it published on the way."""
 
-    def __init__(self, scenario: Scenario, flavour: str = "ros1") -> None:
+    def __init__(self, scenario: Scenario, flavour: str = "ros1", window: TurtlesimWindow | None = None) -> None:
         self.scenario = scenario
         self.flavour = flavour  # "ros1" (Noetic's turtlesim) or "ros2" (Jazzy's)
+        self.window = window  # None: the run's first window, with turtlesim's own names
+        self.node = window.node if window is not None else NODE_NAME
+        self._namespace = self.node.rpartition("/")[0]
         self.mode_name = "kinematic"
         self.canvas = Canvas(DEFAULT_BACKGROUND)
         self.params: Parameters | None = None  # the run's parameter server, once given
@@ -197,15 +206,15 @@ class TurtlesimWorld(ScenarioTimes):
         self._id_counter = 0  # turtle_frame.cpp's id_counter_: the N of the last turtleN it named
         self._time_ns = 0
         self._spawn_default()
-        if "initial_pose" in scenario.model_fields_set:  # a turtle moved away from the centre before the run
+        if window is None and "initial_pose" in scenario.model_fields_set:  # turtle1 moved before the run
             pose = scenario.initial_pose
             turtle = self.turtles[DEFAULT_TURTLE]
             turtle.x, turtle.y_screen, turtle.theta = pose.x, CANVAS_M - pose.y, pose.yaw
-        for i, command in enumerate(scenario.script):
+        for i, command in enumerate(scenario.script if window is None else ()):
             if command.topic is not None and command.topic not in self.command_topics:
                 raise TurtlesimError(f"script[{i}].topic {command.topic!r} is not a turtle's cmd_vel; expected one of "
                                      f"{self.command_topics}")
-        self._script = [(scenario.start_ns + command.t_ns, command) for command in scenario.script]
+        self._script = [(scenario.start_ns + command.t_ns, command) for command in scenario.script if window is None]
         self._next_script = 0
         self._updates = 0  # updates happen at every multiple of UPDATE_NS after 0
         self._pending: list[Sample] = []
@@ -218,10 +227,12 @@ class TurtlesimWorld(ScenarioTimes):
         """Each turtle's pose and colour sensor, turtle1's ground truth, and the /rosout warnings."""
         rate = 1e9 / UPDATE_NS
         declared = []
+        node = self.node if self.window is not None else ""  # a further window's topics are its node's
         for turtle in self.turtles.values():
-            declared.append(WorldTopic(turtle.topic("pose"), "turtlesim/Pose", rate))
-            declared.append(WorldTopic(turtle.topic("color_sensor"), "turtlesim/Color", rate))
-        declared.append(WorldTopic(GROUND_TRUTH_TOPIC, "nav_msgs/Odometry", rate, to_nodes=False))
+            declared.append(WorldTopic(turtle.topic("pose"), "turtlesim/Pose", rate, node=node))
+            declared.append(WorldTopic(turtle.topic("color_sensor"), "turtlesim/Color", rate, node=node))
+        if self.window is None:
+            declared.append(WorldTopic(GROUND_TRUTH_TOPIC, "nav_msgs/Odometry", rate, to_nodes=False))
         # Jazzy's rclcpp publishes its log on /rosout for any node to hear (the probes read the warnings there).
         declared.append(WorldTopic(ROSOUT, "rosgraph_msgs/Log", 0, to_nodes=self.flavour == ROS2, shared=True))
         return tuple(declared)
@@ -250,7 +261,7 @@ class TurtlesimWorld(ScenarioTimes):
     @property
     def node_name(self) -> str:
         """The ROS node that publishes this world's topics (the callerid recordings name)."""
-        return NODE_NAME
+        return self.node
 
     @property
     def sim_clock(self) -> bool:
@@ -261,12 +272,13 @@ class TurtlesimWorld(ScenarioTimes):
     @property
     def services(self) -> tuple[WorldService, ...]:
         """turtle_frame.cpp's four, then each live turtle's three (turtle.cpp)."""
-        declared = [WorldService("/clear", "std_srvs/Empty"), WorldService("/reset", "std_srvs/Empty"),
-                    WorldService("/spawn", "turtlesim/Spawn"), WorldService("/kill", "turtlesim/Kill")]
+        ns = self._namespace
+        declared = [WorldService(f"{ns}/clear", "std_srvs/Empty"), WorldService(f"{ns}/reset", "std_srvs/Empty"),
+                    WorldService(f"{ns}/spawn", "turtlesim/Spawn"), WorldService(f"{ns}/kill", "turtlesim/Kill")]
         if self.flavour == ROS2:  # the node's own parameter services, as every rclcpp node serves them
-            declared += [WorldService(f"{NODE_NAME}/get_parameters", "rcl_interfaces/GetParameters"),
-                         WorldService(f"{NODE_NAME}/set_parameters", "rcl_interfaces/SetParameters"),
-                         WorldService(f"{NODE_NAME}/describe_parameters", "rcl_interfaces/DescribeParameters")]
+            declared += [WorldService(f"{self.node}/get_parameters", "rcl_interfaces/GetParameters"),
+                         WorldService(f"{self.node}/set_parameters", "rcl_interfaces/SetParameters"),
+                         WorldService(f"{self.node}/describe_parameters", "rcl_interfaces/DescribeParameters")]
         for turtle in self.turtles.values():
             declared += [WorldService(turtle.topic("set_pen"), "turtlesim/SetPen"),
                          WorldService(turtle.topic("teleport_absolute"), "turtlesim/TeleportAbsolute"),
@@ -284,16 +296,17 @@ class TurtlesimWorld(ScenarioTimes):
     def use_parameters(self, params: Parameters) -> None:
         """Start on the run's parameter server as turtle_frame.cpp's constructor does: each background parameter
         not set yet gets its default, then the canvas is filled with the colour they give."""
-        for name, value in self.scenario.world_params.items():  # the node's own parameters, from its launch
+        own = self.scenario.world_params if self.window is None else self.window.params
+        for name, value in own.items():  # the node's own parameters, from its launch
             if self.flavour != ROS2 or name in turtlesim_params.DECLARED:  # Jazzy ignores overrides it never declares
-                params.set(f"{NODE_NAME}/{name}", value)
-        for name, default in zip(BACKGROUND_PARAMS, DEFAULT_BACKGROUND):
-            if not params.has(name):
-                params.set(name, default)
-        if self.flavour == ROS2 and not params.has(HOLONOMIC_PARAM):
-            params.set(HOLONOMIC_PARAM, False)
+                params.set(f"{self.node}/{name}", value)
+        for channel, default in zip("rgb", DEFAULT_BACKGROUND):
+            if not params.has(f"{self.node}/background_{channel}"):
+                params.set(f"{self.node}/background_{channel}", default)
+        if self.flavour == ROS2 and not params.has(f"{self.node}/holonomic"):
+            params.set(f"{self.node}/holonomic", False)
         self.params = params
-        self.canvas.clear(background(params))
+        self.canvas.clear(self._background())
 
     def command(self, topic: str, linear: tuple[float, float, float] = (0.0, 0.0, 0.0),
                 angular: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> bool:
@@ -420,7 +433,7 @@ class TurtlesimWorld(ScenarioTimes):
         """turtle.cpp's velocityCallback: Jazzy's keeps the last ``linear.y`` unless ``holonomic`` is true now."""
         turtle.last_command_ns = t_ns
         turtle.linear_x, turtle.angular = float(linear[0]), float(angular[2])
-        if self.flavour != ROS2 or (self.params is not None and self.params.get(HOLONOMIC_PARAM) is True):
+        if self.flavour != ROS2 or (self.params is not None and self.params.get(f"{self.node}/holonomic") is True):
             turtle.linear_y = float(linear[1])
 
     def _spawn_default(self) -> LogSample:
@@ -440,9 +453,9 @@ class TurtlesimWorld(ScenarioTimes):
             # Jazzy's turtle starts from the floats, its screen y the float difference (height_in_meters_ is a float):
             # turtle1's y is 5.544445 in the wall warning, not 5.544444 (measured with real_turtlesim2.py).
             y_screen = struct.unpack("<f", struct.pack("<f", CANVAS_M32 - y32))[0]
-            self.turtles[name] = Turtle(name, x32, y_screen, theta32)
+            self.turtles[name] = Turtle(name, x32, y_screen, theta32, node=self.node)
         else:
-            self.turtles[name] = Turtle.spawned(name, x, y, theta)
+            self.turtles[name] = Turtle.spawned(name, x, y, theta, self.node)
         return name, self._log(INFO, f"Spawning turtle [{name}] at x=[{x32:f}], y=[{y32:f}], theta=[{theta32:f}]")
 
     def _log(self, level: int, msg: str) -> LogSample:
@@ -451,19 +464,21 @@ class TurtlesimWorld(ScenarioTimes):
 
     @property
     def _log_name(self) -> str:
-        """Who /rosout says logged: roscpp gives the node's name, rclcpp its logger's (no leading slash)."""
-        return NODE_NAME if self.flavour != ROS2 else NODE_NAME[1:]
+        """Who /rosout says logged: roscpp gives the node's name, rclcpp its logger's (``turtlesim2.sim``)."""
+        return self.node if self.flavour != ROS2 else self.node[1:].replace("/", ".")
 
     # -- services (turtle_frame.cpp, turtle.cpp) ---------------------------------------------------------------
 
     def _handlers(self) -> dict[str, Callable[[Request], ServiceResult]]:
         """Each served service's handler, by resolved name."""
+        ns = self._namespace
         handlers: dict[str, Callable[[Request], ServiceResult]] = {
-            "/clear": self._clear, "/reset": self._reset, "/spawn": self._spawn_service, "/kill": self._kill}
+            f"{ns}/clear": self._clear, f"{ns}/reset": self._reset, f"{ns}/spawn": self._spawn_service,
+            f"{ns}/kill": self._kill}
         if self.flavour == ROS2:
-            handlers[f"{NODE_NAME}/get_parameters"] = self._get_parameters
-            handlers[f"{NODE_NAME}/set_parameters"] = self._set_parameters
-            handlers[f"{NODE_NAME}/describe_parameters"] = self._describe_parameters
+            handlers[f"{self.node}/get_parameters"] = self._get_parameters
+            handlers[f"{self.node}/set_parameters"] = self._set_parameters
+            handlers[f"{self.node}/describe_parameters"] = self._describe_parameters
         for turtle in self.turtles.values():
             handlers[turtle.topic("set_pen")] = partial(self._set_pen, turtle)
             handlers[turtle.topic("teleport_absolute")] = partial(self._teleport, turtle, False)
@@ -472,7 +487,7 @@ class TurtlesimWorld(ScenarioTimes):
 
     def _clear(self, request: Request) -> ServiceResult:  # noqa: ARG002 -- std_srvs/Empty
         """/clear: the canvas filled with the background the parameters give now."""
-        self.canvas.clear(background(self.params))
+        self.canvas.clear(self._background())
         return ServiceResult(True, {}, (self._log(INFO, "Clearing turtlesim."),))
 
     def _reset(self, request: Request) -> ServiceResult:  # noqa: ARG002 -- std_srvs/Empty
@@ -481,7 +496,7 @@ class TurtlesimWorld(ScenarioTimes):
         self.turtles.clear()
         self._id_counter = 0
         spawned = self._spawn_default()
-        self.canvas.clear(background(self.params))
+        self.canvas.clear(self._background())
         return ServiceResult(True, {}, (said, spawned))
 
     def _spawn_service(self, request: Request) -> ServiceResult:
@@ -509,7 +524,7 @@ class TurtlesimWorld(ScenarioTimes):
     def _get_parameters(self, request: Request) -> ServiceResult:
         """Jazzy's get_parameters: each named parameter's value (none when one is not declared)."""
         names = [str(name) for name in request["names"]]  # type: ignore[attr-defined]
-        return ServiceResult(True, {"values": turtlesim_params.get_parameters(NODE_NAME, self._tree(), names)})
+        return ServiceResult(True, {"values": turtlesim_params.get_parameters(self.node, self._tree(), names)})
 
     def _describe_parameters(self, request: Request) -> ServiceResult:
         """Jazzy's describe_parameters (`ros2 param describe /turtlesim background_r`), measured by probe p24."""
@@ -520,10 +535,13 @@ class TurtlesimWorld(ScenarioTimes):
         """Jazzy's set_parameters, one parameter at a time; a new background colour shows at once (turtle_frame.cpp
         repaints on its own node's parameter events, and paintEvent reads the parameters)."""
         parameters: list = request["parameters"]  # type: ignore[assignment]
-        results, changed = turtlesim_params.set_parameters(NODE_NAME, self._tree(), parameters)
+        results, changed = turtlesim_params.set_parameters(self.node, self._tree(), parameters)
         if any(name.startswith("background_") for name in changed):
-            self.canvas.repaint(background(self.params))
+            self.canvas.repaint(self._background())
         return ServiceResult(True, {"results": results})
+
+    def _background(self) -> Rgb:
+        return background(self.params, self.node)
 
     def _tree(self) -> Parameters:
         """The run's parameter tree (the world's start hands it over; TurtlesimError before that)."""

@@ -4,16 +4,20 @@ from __future__ import annotations
 from sim import turtlesim, world
 from sim.scenario import TURTLESIM, Pose2D, Scenario
 from sim.turtlesim import TurtlesimWorld
+from sim.turtlesim_windows import TurtlesimWindows
 from sim.world import World
 
 WORLD_NODE_NAMES = frozenset({world.NODE_NAME, turtlesim.NODE_NAME})  # the nodes a world stands for
+AnyWorld = World | TurtlesimWorld | TurtlesimWindows  # what runs a scenario: each keeps the contract in DEVELOPERS.md
 
 
-def open_world(scenario: Scenario, flavour: str = "ros1") -> World | TurtlesimWorld:
-    """The world that runs ``scenario`` (both keep the contract in DEVELOPERS.md, so callers need not know which), as
+def open_world(scenario: Scenario, flavour: str = "ros1") -> AnyWorld:
+    """The world that runs ``scenario`` (all keep the contract in DEVELOPERS.md, so callers need not know which), as
     the ROS version of the run's nodes has it (``flavour``: "ros1" or "ros2"; turtlesim and the TurtleBot3's LiDAR
-    differ between Noetic's and Jazzy's)."""
-    return TurtlesimWorld(scenario, flavour) if scenario.robot == TURTLESIM else World(scenario, flavour=flavour)
+    differ between Noetic's and Jazzy's); turtlesim with more than one window when the scenario names others."""
+    if scenario.robot != TURTLESIM:
+        return World(scenario, flavour=flavour)
+    return TurtlesimWindows(scenario, flavour) if scenario.turtlesim_windows else TurtlesimWorld(scenario, flavour)
 
 
 def command_types(scenario: Scenario, flavour: str) -> tuple[str, ...]:

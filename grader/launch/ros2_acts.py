@@ -12,9 +12,9 @@ from typing import Any
 import yaml
 from pydantic import ValidationError
 
-from grader.launch.turtlesim import is_world
+from grader.launch.turtlesim import first_window, is_world
 from grader.nodelib.common.rosgrade_param_files import ParamFileError, ParamSet
-from sim.scenario import ActionGoalSpec, ParamSetSpec, PublicationSpec, Scenario, ServiceCallSpec
+from sim.scenario import ActionGoalSpec, ParamSetSpec, PublicationSpec, Scenario, ServiceCallSpec, TurtlesimWindow
 
 _TOPIC_PUB_FLAGS = {"-r": "rate", "--rate": "rate", "-t": "times", "--times": "times"}
 # ros2 topic pub options that take a value rosgrade does not model (QoS, waiting, printing)
@@ -36,6 +36,10 @@ class LaunchActs:
     action_goals: list[ActionGoalSpec] = field(default_factory=list)
     # The parameters the launch file starts the world's node with (turtlesim_node's `parameters=`), by name.
     world_params: dict[str, Any] = field(default_factory=dict)
+    # Its further turtlesim_nodes: windows of their own (the launch tutorial's turtlesim_mimic_launch.py)
+    turtlesim_windows: list[TurtlesimWindow] = field(default_factory=list)
+    # The launched turtlesim's names (and node name) that lead to the world's, which every act addressing them takes
+    world_names: dict[str, str] = field(default_factory=dict)
 
     def add(self, act: Any) -> None:
         kind = {ServiceCallSpec: self.service_calls, ParamSetSpec: self.param_sets,
@@ -44,7 +48,7 @@ class LaunchActs:
 
     def __bool__(self) -> bool:
         return bool(self.service_calls or self.param_sets or self.publications or self.action_goals
-                    or self.world_params)
+                    or self.world_params or self.turtlesim_windows or self.world_names)
 
 
 def _words(process: dict[str, Any]) -> list[str]:
@@ -130,8 +134,11 @@ def launch_acts(processes: list[dict[str, Any]], file_name: str) -> tuple[Launch
     acts = LaunchActs()
     findings: list[str] = []
     handled: set[int] = set()
+    first = first_window(processes)
     for index, process in enumerate(processes):
-        if is_world(process):  # turtlesim_node's parameters; teleop's and mimic's are their own
+        if is_world(process):  # the first turtlesim_node's parameters; other windows' are their own
+            if process is not first:
+                continue
             try:
                 acts.world_params.update(world_params(process))
             except ParamFileError as exc:
@@ -177,14 +184,30 @@ def world_params(process: dict[str, Any]) -> dict[str, Any]:
     return {name: value for name, value in overrides.for_node(full_name).items() if value is not None}
 
 
+_ADDRESS = {ServiceCallSpec: "service", ParamSetSpec: "node", PublicationSpec: "topic", ActionGoalSpec: "action"}
+KINDS = ("service_calls", "param_sets", "publications", "action_goals")
+
+
+def renamed(acts: list[Any], names: dict[str, str]) -> list[Any]:
+    """The acts with the name each addresses (its service, node, topic or action) led through ``names``."""
+    out = []
+    for act in acts:
+        address = _ADDRESS[type(act)]
+        name = getattr(act, address)
+        out.append(act.model_copy(update={address: names[name]}) if name in names else act)
+    return out
+
+
 def with_acts(scenario: Scenario, acts: LaunchActs) -> Scenario:
-    """The scenario with the launch file's acts added to its own, each list in time order, and the world's node
-    started with the launch file's parameters for it."""
+    """The scenario with the launch file's acts added to its own, each list in time order, every act addressing the
+    launched turtlesim led to the world, and the world's node started with the launch file's parameters for it."""
     if not acts:
         return scenario
     update: dict[str, Any] = {
-        name: sorted([*getattr(scenario, name), *getattr(acts, name)], key=lambda act: act.t)
-        for name in ("service_calls", "param_sets", "publications", "action_goals") if getattr(acts, name)}
+        name: sorted(renamed([*getattr(scenario, name), *getattr(acts, name)], acts.world_names), key=lambda a: a.t)
+        for name in KINDS if getattr(acts, name) or acts.world_names}
     if acts.world_params:
         update["world_params"] = {**scenario.world_params, **acts.world_params}
+    if acts.turtlesim_windows:
+        update["turtlesim_windows"] = [*scenario.turtlesim_windows, *acts.turtlesim_windows]
     return scenario.model_copy(update=update)

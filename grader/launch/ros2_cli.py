@@ -9,7 +9,7 @@ from typing import Any
 from grader.launch.ros2_eval import Evaluation, Ros2LaunchError, evaluate
 from grader.launch.ros2_hints import hint_for
 from grader.launch.ros2_index import installed, not_installed, workspace_for
-from grader.launch.turtlesim import is_world
+from grader.launch.turtlesim import first_window, is_world
 from grader.provided_nodes import launched_script
 from grader.runtime.client_library import ROS2
 from grader.workspace import WorkspaceError, read_workspace
@@ -93,14 +93,13 @@ def external_include_notes(result: dict[str, Any]) -> list[str]:
 def nodes_text(result: dict[str, Any]) -> str:
     """One line per process launch would start, in its start order."""
     lines = []
-    worlds = 0
+    first = first_window(result.get("processes", []))
     for process in result.get("processes", []):
         if process["kind"] == "node":
             external = " (external: not run by rosgrade)" if process.get("external") else ""
             if is_world(process):
-                worlds += 1
-                external = (" (simulated by rosgrade)" if worlds == 1 else
-                            " (not run: rosgrade simulates one turtlesim; a task refuses a second)")
+                external = (" (simulated by rosgrade)" if process is first else
+                            " (simulated by rosgrade: another turtlesim window, under its own names)")
             elif launched_script(process["package"], process["executable"], ROS2) is not None:
                 external = " (run by rosgrade as turtlesim's own node)"
             elif process.get("world"):

@@ -8,8 +8,12 @@ world's, and the world's own name, which nothing would serve under ``ros2 launch
 another namespace reaches no turtle. rcl applies the first rule that matches a name, so a node's own rule whose target
 is one of these names is rewritten to where the bridge leads. The launch file's own ``ros2`` command lines, which the
 grader carries out (``ros2 service call /turtlesim1/spawn``, ``ros2 param set /turtlesim1/sim background_r 120``),
-reach the world the same way. One world serves one turtlesim_node: a launch file that
-starts two (the launch tutorial's turtlesim_mimic_launch.py) is refused with what to change.
+reach the world the same way.
+
+A launch file that starts turtlesim_node more than once (the launch tutorial's turtlesim_mimic_launch.py) gets a
+turtlesim window for each: the first one in the root namespace (else the first one) is bridged as above and graded;
+each other is a window of its own under the names it was launched with (``/turtlesim2/turtle1/cmd_vel``), which
+needs no bridge, so it may not be remapped.
 """
 from __future__ import annotations
 
@@ -17,9 +21,11 @@ from dataclasses import dataclass
 from typing import Any
 
 from grader.launch import names
-from grader.launch.ros2_acts import LaunchActs
+from grader.launch.ros2_acts import KINDS, LaunchActs, renamed, world_params
 from grader.launch.model import LaunchError
-from grader.launch.turtlesim import UNSERVED, WORLD_NAMES, is_world
+from grader.launch.turtlesim import UNSERVED, WORLD_NAMES, first_window, is_world
+from grader.nodelib.common.rosgrade_param_files import ParamFileError
+from sim.scenario import TurtlesimWindow
 
 ACTION = "turtle1/rotate_absolute"  # Jazzy's turtle1 action; rosgrade's nodes remap its five parts one by one
 ACTION_PARTS = ("_action/send_goal", "_action/cancel_goal", "_action/get_result", "_action/feedback",
@@ -35,6 +41,8 @@ class Ros2Turtlesim:
 
     process: dict[str, Any]
     launched: dict[str, str]  # world name (/turtle1/cmd_vel) -> the launched node's (/turtlesim1/turtle1/cmd_vel)
+    windows: tuple[TurtlesimWindow, ...] = ()  # the other turtlesim_nodes, each a window under its own names
+    notes: tuple[str, ...] = ()  # what the report says about those windows
 
 
 def _identity(process: dict[str, Any]) -> tuple[str, str]:
@@ -68,16 +76,12 @@ def _rules(args: list[str]) -> list[tuple[int, str, str]]:
 
 
 def world(processes: list[dict[str, Any]], file_name: str) -> Ros2Turtlesim | None:
-    """The launch file's turtlesim_node (None without one); LaunchError for two, or remaps that merge its names."""
-    started = [p for p in processes if is_world(p)]
-    if not started:
+    """The launch file's turtlesim_nodes (None without one): the first window and the others; LaunchError for remaps
+    that merge the first one's names, or windows rosgrade cannot tell apart."""
+    process = first_window(processes)
+    if process is None:
         return None
-    if len(started) > 1:
-        where = ", ".join(_full_name(p) for p in started)
-        raise LaunchError(f"{file_name} starts turtlesim_node {len(started)} times ({where}); rosgrade simulates one "
-                          "turtlesim window, so a task cannot run two: start turtlesim_node once and /spawn a second "
-                          "turtle in it (turtle2) for the other turtle")
-    process = started[0]
+    windows, notes = _other_windows([p for p in processes if is_world(p) and p is not process], process, file_name)
     node_name, namespace = _identity(process)
     remaps = {expand(s, node_name, namespace): expand(t, node_name, namespace) for _, s, t in _rules(process["args"])}
     launched = {}
@@ -87,7 +91,33 @@ def world(processes: list[dict[str, Any]], file_name: str) -> Ros2Turtlesim | No
     if len(set(launched.values())) < len(launched):
         raise LaunchError(f"{file_name}: the remappings of turtlesim_node give two of its topics or services the same "
                           "name; rosgrade cannot run turtlesim that way")
-    return Ros2Turtlesim(process, {w: name for w, name in launched.items() if w != name})
+    return Ros2Turtlesim(process, {w: name for w, name in launched.items() if w != name}, windows, notes)
+
+
+def _other_windows(others: list[dict[str, Any]], first: dict[str, Any],
+                   file_name: str) -> tuple[tuple[TurtlesimWindow, ...], tuple[str, ...]]:
+    """A window for each turtlesim_node besides the first, under the name it was launched with, and findings."""
+    windows, notes, seen = [], [], {_full_name(first)}
+    for process in others:
+        node, namespace = _full_name(process), _identity(process)[1]
+        if node in seen or namespace == "/":
+            raise LaunchError(f"{file_name} starts turtlesim_node {len(others) + 1} times, and {node} would share "
+                              "its topics and services with another: start each turtlesim in a namespace of its own "
+                              "(Node(..., namespace='turtlesim2'))")
+        if _rules(process["args"]):
+            raise LaunchError(f"{file_name} remaps the names of its turtlesim_node {node}; rosgrade runs a second "
+                              "turtlesim window under the names of its namespace only: remap the nodes that talk to "
+                              "it instead")
+        seen.add(node)
+        try:
+            params = world_params(process)
+        except ParamFileError as exc:
+            notes.append(f"{file_name} gives turtlesim_node {node} parameters rcl refuses: {exc.problem}.")
+            params = {}
+        windows.append(TurtlesimWindow(node=node, params=params))
+        notes.append(f"{file_name} starts a second turtlesim window, {node}: its turtles are recorded under its names "
+                     f"({namespace.rstrip('/')}/turtle1/pose), and the task is graded on the first window's turtle.")
+    return tuple(windows), tuple(notes)
 
 
 def bridged(args: list[str], process: dict[str, Any], turtlesim: Ros2Turtlesim | None) -> list[str]:
@@ -111,26 +141,26 @@ def bridged(args: list[str], process: dict[str, Any], turtlesim: Ros2Turtlesim |
 
 
 def finding(turtlesim: Ros2Turtlesim | None, file_name: str) -> list[str]:
-    """What the report says about a turtlesim_node launched under other names than the world's."""
-    if turtlesim is None or not turtlesim.launched:
+    """What the report says about a turtlesim_node launched under other names than the world's, and other windows."""
+    if turtlesim is None:
         return []
+    if not turtlesim.launched:
+        return list(turtlesim.notes)
     moved = ", ".join(f"{turtlesim.launched[w]} (recorded as {w})" for w in ("/turtle1/cmd_vel", "/turtle1/pose")
                       if w in turtlesim.launched)
     return [f"{file_name} starts turtlesim_node as {_full_name(turtlesim.process)}, so its turtle uses "
-            f"{moved or 'other service names'}, as with ros2 launch; turtlesim's usual names reach no turtle."]
+            f"{moved or 'other service names'}, as with ros2 launch; turtlesim's usual names reach no turtle.",
+            *turtlesim.notes]
 
 
 def bridged_acts(acts: LaunchActs, turtlesim: Ros2Turtlesim | None) -> LaunchActs:
     """The launch file's ros2 command lines with the launched turtlesim's names led to the world's (its node name to
-    the world's node, for ``ros2 param set``)."""
-    if turtlesim is None or not turtlesim.launched:
+    the world's node, for ``ros2 param set``), the names to lead the scenario's own acts through, and its other
+    turtlesim windows."""
+    if turtlesim is None:
         return acts
-    leads = {launched: world_name for world_name, launched in turtlesim.launched.items()}
-    node = _full_name(turtlesim.process)
-    return LaunchActs(
-        service_calls=[c.model_copy(update={"service": leads.get(c.service, c.service)}) for c in acts.service_calls],
-        param_sets=[p.model_copy(update={"node": WORLD_NODE_NAME if p.node == node else p.node})
-                    for p in acts.param_sets],
-        publications=[p.model_copy(update={"topic": leads.get(p.topic, p.topic)}) for p in acts.publications],
-        action_goals=[g.model_copy(update={"action": leads.get(g.action, g.action)}) for g in acts.action_goals],
-        world_params=acts.world_params)
+    names = {launched: world_name for world_name, launched in turtlesim.launched.items()}
+    if names:
+        names[_full_name(turtlesim.process)] = WORLD_NODE_NAME
+    return LaunchActs(**{kind: renamed(getattr(acts, kind), names) for kind in KINDS},
+                      world_params=acts.world_params, turtlesim_windows=list(turtlesim.windows), world_names=names)

@@ -95,7 +95,7 @@ def node_specs(launch: Launch, packages: Mapping[str, Path], stdin: str | None =
     notes = list(launch.notes)
     world = turtlesim.world_node(launch)
     for node in launch.nodes:
-        if world is not None and node is world.node:
+        if world is not None and world.simulates(node):
             continue  # the task's world, not a process
         provided = node.pkg in known.NODE_PACKAGES and node.pkg not in packages
         if provided:

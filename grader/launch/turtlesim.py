@@ -8,6 +8,10 @@ gets remaps that bridge the two: the name the launched turtlesim would use (``/s
 world's, and the world's own name, which nothing would serve in real ROS, to an unserved one, so a node in the wrong
 namespace reaches no turtle, as with roslaunch. rospy applies one remap per name, so a node's own ``<remap>`` whose
 target is one of these names is rewritten to where the bridge leads.
+
+A launch file that starts turtlesim_node more than once (the roslaunch tutorial's turtlemimic.launch) gets a window
+for each: the first one in the root namespace (else the first one) is bridged as above and graded; each other is a
+window under the names it was launched with (``/turtlesim2/turtle1/cmd_vel``), so it may not be remapped.
 """
 from __future__ import annotations
 
@@ -17,6 +21,7 @@ from typing import Any
 
 from grader.launch import names
 from grader.launch.model import Launch, LaunchError, LaunchNode
+from sim.scenario import TurtlesimWindow
 
 PACKAGE = "turtlesim"
 WORLD_NODE = "turtlesim_node"
@@ -36,12 +41,37 @@ class TurtlesimNode:
 
     node: LaunchNode
     launched: dict[str, str]  # world name (/turtle1/cmd_vel) -> the launched node's name for it (/sim/turtle1/cmd_vel)
+    others: tuple[LaunchNode, ...] = ()  # further turtlesim_nodes: windows under their own names
+
+    @property
+    def windows(self) -> list[TurtlesimWindow]:
+        """The further windows; their parameters are on the run's parameter server, as roslaunch sets them."""
+        return [TurtlesimWindow(node=node.full_name) for node in self.others]
+
+    @property
+    def world_names(self) -> dict[str, str]:
+        """The launched node's names (and its node name) that lead to the world's, for the scenario's own acts."""
+        if not self.launched:
+            return {}
+        return {**{launched: world for world, launched in self.launched.items()}, self.node.full_name: WORLD_NAME}
+
+    def simulates(self, node: LaunchNode) -> bool:
+        """Whether ``node`` is one of the turtlesim windows (not a process the run starts)."""
+        return node is self.node or any(node is other for other in self.others)
 
 
 def is_world(process: dict[str, Any]) -> bool:
     """Whether a ROS 2 launch file's process is turtlesim_node (the world, not a process rosgrade starts)."""
     return (process.get("kind") == "node" and process.get("package") == PACKAGE
             and process.get("executable") == WORLD_NODE)
+
+
+def first_window(processes: list[dict[str, Any]]) -> dict[str, Any] | None:
+    """The ROS 2 launch file's turtlesim_node that is the run's first window, with turtlesim's own names: the first
+    one started in the root namespace, else the first one (None without any)."""
+    started = [p for p in processes if is_world(p)]
+    rooted = [p for p in started if not (p.get("namespace") or "").strip("/")]
+    return (rooted or started or [None])[0]
 
 
 def resolve(node: LaunchNode, name: str) -> str:
@@ -52,15 +82,23 @@ def resolve(node: LaunchNode, name: str) -> str:
 
 
 def world_node(launch: Launch) -> TurtlesimNode | None:
-    """The launch file's turtlesim_node (None without one); LaunchError for two, or a remap that merges names."""
+    """The launch file's turtlesim_nodes (None without one): the first window and the others; LaunchError for a remap
+    that merges the first one's names, or windows the grader cannot tell apart."""
     started = [n for n in launch.nodes if n.pkg == PACKAGE and n.type == WORLD_NODE]
     if not started:
         return None
-    if len(started) > 1:
-        lines = ", ".join(str(n.where) for n in started)
-        raise LaunchError(f"{started[1].where}: the launch file starts turtlesim_node {len(started)} times ({lines}); "
-                          "the grader runs one turtlesim window: start it once and spawn more turtles with /spawn")
-    node = started[0]
+    node = next((n for n in started if n.namespace == "/"), started[0])
+    others = tuple(n for n in started if n is not node)
+    seen = {node.full_name}
+    for other in others:
+        if other.namespace == "/" or other.full_name in seen:
+            raise LaunchError(f"{other.where}: this turtlesim_node would share its topics and services with the one "
+                              f"at {node.where if other.namespace == '/' else 'the same name'}: start each turtlesim "
+                              "in a namespace of its own (<group ns=\"turtlesim2\">)")
+        if other.remaps:
+            raise LaunchError(f"{other.where}: the grader runs a second turtlesim window under the names of its "
+                              "namespace only: remove its <remap> and remap the nodes that talk to it instead")
+        seen.add(other.full_name)
     remaps = {resolve(node, source): resolve(node, target) for source, target in node.remaps}
     launched = {}
     for leaf in WORLD_NAMES:
@@ -69,7 +107,7 @@ def world_node(launch: Launch) -> TurtlesimNode | None:
     if len(set(launched.values())) < len(launched):
         raise LaunchError(f"{node.where}: the remaps of turtlesim_node give two of its topics or services the same "
                           "name; the grader cannot run turtlesim that way")
-    return TurtlesimNode(node, {world: name for world, name in launched.items() if world != name})
+    return TurtlesimNode(node, {world: name for world, name in launched.items() if world != name}, others)
 
 
 def bridge(node: LaunchNode, turtlesim: TurtlesimNode | None) -> tuple[tuple[str, str], ...]:
@@ -128,4 +166,7 @@ def check_robot(launch: Launch, turtlesim: TurtlesimNode | None, robot: str) -> 
         notes.append(f"{turtlesim.node.where}: the grader's turtlesim runs as {WORLD_NAME}: it starts with "
                      f"{', '.join(private)} as its own parameters, but a change to them while it runs does not "
                      "reach it (it reads them again on /clear and /reset under its own name).")
+    notes += [f"{other.where}: a second turtlesim window, {other.full_name}: its turtles are recorded under its names "
+              f"({other.namespace}turtle1/pose), and the task is graded on the first window's turtle."
+              for other in (turtlesim.others if turtlesim is not None else ())]
     return notes

@@ -3,9 +3,9 @@ from __future__ import annotations
 
 from grader.metrics import (
     action_client, action_goals, circle, clearance, collisions, coverage, exploration, final_pose, goal,
-    goal_turning, lidar_distance, log_lines, loops, number_game, param_radius, polygon, pose_print, rotate_absolute,
-    service_client, service_responses, shutdown, spawn_draw, square, stop, stop_distance, timing, turtle_rotation,
-    turtle_stop, turtle_travel, velocity, wall_following, wall_hits,
+    goal_turning, lidar_distance, log_lines, loops, mimic, number_game, param_radius, polygon, pose_print,
+    rotate_absolute, service_client, service_responses, shutdown, spawn_draw, square, stop, stop_distance, timing,
+    turtle_rotation, turtle_stop, turtle_travel, velocity, wall_following, wall_hits,
 )
 from grader.metrics.base import Measurement, Metric, MetricError, MetricParams, TrajectoryParams
 from grader.metrics.run import Commands, OutputLine, RunData, RunInfo, Trajectory
@@ -19,7 +19,7 @@ METRICS: dict[str, Metric] = {
         service_responses.METRIC, param_radius.METRIC, number_game.METRIC, service_client.METRIC,
         action_goals.METRIC, action_client.METRIC, collisions.METRIC, stop_distance.METRIC, clearance.METRIC,
         spawn_draw.METRIC, rotate_absolute.METRIC,
-        exploration.METRIC, wall_following.METRIC, lidar_distance.METRIC,
+        exploration.METRIC, wall_following.METRIC, lidar_distance.METRIC, mimic.METRIC,
     )
 }
 

@@ -184,6 +184,8 @@ class RunData:
     start_time: float = 0.0  # sim time (s) when the node was started
     shutdown_at: float | None = None  # scenario's Ctrl+C time, seconds after start
     poses: dict[str, Trajectory] = field(default_factory=dict)  # turtlesim: each turtle's pose topic → its poses
+    # turtlesim's further windows (the launch tutorials' turtlesim2): their turtles' pose topics → poses
+    window_poses: dict[str, Trajectory] = field(default_factory=dict)
     service_calls: tuple[ServiceCall, ...] = ()  # in the order they were served
     param_changes: tuple[ParamChange, ...] = ()  # in the order they were made (none: a recording without them)
     action_goals: tuple[ActionGoal, ...] = ()  # the grader's, in the order sent (grader/metrics/action_record.py)
@@ -223,6 +225,7 @@ class RunData:
                               tuple(tp for tp, k in zip(self.commands.topic, cut) if k)),
             lines=tuple(line for line in self.lines if line.t < end),
             poses={topic: path.between(end=end) for topic, path in self.poses.items()},
+            window_poses={topic: path.between(end=end) for topic, path in self.window_poses.items()},
             service_calls=tuple(call for call in self.service_calls if call.t < end),
             # The first change is the tree the run started with, whenever it was recorded.
             param_changes=tuple(c for c in self.param_changes if c.t < end or c is self.param_changes[0]),
@@ -241,6 +244,7 @@ class RunData:
         """Adapt a ``grader.recording.Recording`` (documented API in DEVELOPERS.md) into arrays."""
         truth = recording.ground_truth()
         calls, params = _calls_and_params(recording)
+        poses, window_poses = _by_window(turtle_poses(recording), _other_windows(recording))
         return cls(
             odometry=_odometry(recording),
             ground_truth=None if truth is None else _trajectory(truth, "ground_truth"),
@@ -249,7 +253,8 @@ class RunData:
             run=RunInfo.from_metadata(getattr(recording, "metadata", None)),
             start_time=start_time,
             shutdown_at=shutdown_at,
-            poses=turtle_poses(recording),
+            poses=poses,
+            window_poses=window_poses,
             service_calls=calls,
             param_changes=params,
             action_goals=action_goals(recording),
@@ -265,6 +270,20 @@ class RunData:
 def _world_info(recording: Any) -> dict:
     info = _decode((getattr(recording, "metadata", None) or {}).get("rosgrade") or {})
     return info if isinstance(info, dict) else {}
+
+
+def _other_windows(recording: Any) -> tuple[str, ...]:
+    """The namespaces of the run's further turtlesim windows, as its recorded scenario names them."""
+    scenario = _decode(_world_info(recording).get("scenario"))
+    windows = scenario.get("turtlesim_windows", []) if isinstance(scenario, dict) else []
+    return tuple(str(w.get("node", "")).rpartition("/")[0] for w in windows if isinstance(w, dict))
+
+
+def _by_window(poses: dict[str, Trajectory], others: tuple[str, ...]) -> tuple[dict[str, Trajectory],
+                                                                              dict[str, Trajectory]]:
+    """The first window's turtles' poses, and the further windows' (their topics are under the windows' namespaces)."""
+    theirs = {topic for topic in poses if any(topic.startswith(namespace + "/") for namespace in others)}
+    return ({t: p for t, p in poses.items() if t not in theirs}, {t: p for t, p in poses.items() if t in theirs})
 
 
 def _client_library(recording: Any) -> str:

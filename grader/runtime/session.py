@@ -39,7 +39,7 @@ from grader.runtime.spec import NodeOutcome, NodeSpec, RunResult, RunSpec
 from grader.runtime.start_order import StartOrder, why_not_started
 from grader.runtime.verdicts import OutputLimitExceeded, exit_status, refine
 from grader.runtime.wire import wire_for
-from sim import WORLD_NODE_NAMES, CommandSample, TurtlesimWorld, World, WorldTopic, open_world
+from sim import WORLD_NODE_NAMES, AnyWorld, CommandSample, WorldTopic, open_world
 from sim.worlds import command_types
 
 # Real rospy connects a new publisher to its subscribers 49-91 ms after it is created (measured); messages
@@ -131,7 +131,7 @@ class Session:
         self.catalog = self.wire.catalog
         # The velocity command types the robot's base takes (the scenario's choice, else the flavour's robot).
         self.command_types = frozenset(self.wire.canonical(t) for t in command_types(spec.scenario, self.wire.name))
-        self.world: World | TurtlesimWorld | None = None  # built after the node processes start, while they import
+        self.world: AnyWorld | None = None  # built after the node processes start, while they import
         self.start_ns = spec.scenario.start_ns
         self.end_ns = spec.scenario.end_ns
         self.shutdown_ns = spec.scenario.shutdown_ns
@@ -693,7 +693,7 @@ class Session:
         publication = self.publications[sample.topic]
         seq = self._next_seq(sample.topic)
         return _Encoded(sample.topic, publication.type, self.wire.encode(sample, seq), sample.t_ns,
-                        self.world.node_name, "world", publication.to_nodes, seq)
+                        publication.node or self.world.node_name, "world", publication.to_nodes, seq)
 
     def commit(self, item: _Encoded, queue: bool) -> None:
         """Record a world message and count it for its subscribers, queueing it for their next batch if ``queue``

@@ -91,11 +91,33 @@ def test_turtlesim_in_the_root_namespace_adds_no_remaps():
     assert teleop.args == ("__name:=teleop",)
 
 
+def test_the_roslaunch_tutorials_two_turtlesims_are_two_windows(tmp_path):
+    mimic_launch = _write(tmp_path, '<group ns="turtlesim1"><node pkg="turtlesim" name="sim" type="turtlesim_node"/>'
+                                    '</group>\n<group ns="turtlesim2"><node pkg="turtlesim" name="sim" '
+                                    'type="turtlesim_node"/></group>\n<node pkg="turtlesim" name="mimic" type="mimic">'
+                                    '<remap from="input" to="turtlesim1/turtle1"/>'
+                                    '<remap from="output" to="turtlesim2/turtle1"/></node>')
+    launch = read_launch(mimic_launch, {}, {}, confine_to=tmp_path)
+    world = turtlesim.world_node(launch)
+    assert world.node.full_name == "/turtlesim1/sim" and [w.node for w in world.windows] == ["/turtlesim2/sim"]
+    assert world.world_names["/turtlesim1/turtle1/cmd_vel"] == "/turtle1/cmd_vel"
+    assert world.world_names["/turtlesim1/sim"] == "/turtlesim"
+    assert "/turtlesim2/turtle1/cmd_vel" not in world.world_names  # the second window keeps its own names
+    (mimic,), notes = _specs(mimic_launch)
+    assert mimic.script.name == "turtle_mimic.py"
+    assert any("a second turtlesim window, /turtlesim2/sim" in note for note in
+               turtlesim.check_robot(launch, world, "turtlesim"))
+
+
 # -- refusals ----------------------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize(("body", "says"), [
     ('<node pkg="turtlesim" type="turtlesim_node" name="a"/>\n<node pkg="turtlesim" type="turtlesim_node" name="b"/>',
-     "case.launch line 3: the launch file starts turtlesim_node 2 times (case.launch line 2, case.launch line 3)"),
+     "case.launch line 3: this turtlesim_node would share its topics and services with the one at case.launch line "
+     "2: start each turtlesim in a namespace of its own"),
+    ('<node pkg="turtlesim" type="turtlesim_node" name="a"/>\n<group ns="t2"><node pkg="turtlesim" '
+     'type="turtlesim_node" name="b"><remap from="turtle1/pose" to="/p"/></node></group>',
+     "case.launch line 3: the grader runs a second turtlesim window under the names of its namespace only"),
     ('<node pkg="turtlesim" type="turtlesim_node" name="a"><remap from="turtle1/pose" to="turtle1/cmd_vel"/></node>',
      "case.launch line 2: the remaps of turtlesim_node give two of its topics or services the same name"),
     ('<node pkg="turtlesim" type="turtlesim_node" name="a"/>',

@@ -1,7 +1,7 @@
 """turtlesim's own nodes in a ROS 2 launch file: turtle_teleop_key and mimic run as the grader's shipped ROS 2 nodes
 (the teleop with the rotate_absolute server) with the launch description's name, namespace, remappings and stdin; a
 turtlesim_node in a namespace is bridged to the one world, so a node beside it reaches the turtle and a node elsewhere
-does not, and the launch file's ros2 command lines reach it; two turtlesim_node are refused with what to change."""
+does not, and the launch file's ros2 command lines reach it; a second turtlesim_node is a window of its own."""
 from __future__ import annotations
 
 import shutil
@@ -95,18 +95,52 @@ def test_a_namespaced_turtlesim_is_reached_from_its_namespace_and_not_from_the_r
                         "(recorded as /turtle1/pose), as with ros2 launch; turtlesim's usual names reach no turtle."]
 
 
-def test_the_launch_tutorials_two_turtlesims_are_refused_with_what_to_change(tmp_path: Path) -> None:
-    with pytest.raises(LaunchError) as raised:
-        _specs(tmp_path, """
+MIMIC_TUTORIAL = """
         Node(package='turtlesim', namespace='turtlesim1', executable='turtlesim_node', name='sim'),
-        Node(package='turtlesim', namespace='turtlesim2', executable='turtlesim_node', name='sim'),
+        Node(package='turtlesim', namespace='turtlesim2', executable='turtlesim_node', name='sim',
+             parameters=[{'background_g': 20}]),
         Node(package='turtlesim', executable='mimic', name='mimic',
              remappings=[('/input/pose', '/turtlesim1/turtle1/pose'),
-                         ('/output/cmd_vel', '/turtlesim2/turtle1/cmd_vel')]),""")
-    assert str(raised.value) == (
-        "case.launch.py starts turtlesim_node 2 times (/turtlesim1/sim, /turtlesim2/sim); rosgrade simulates one "
-        "turtlesim window, so a task cannot run two: start turtlesim_node once and /spawn a second turtle in it "
-        "(turtle2) for the other turtle")
+                         ('/output/cmd_vel', '/turtlesim2/turtle1/cmd_vel')]),"""
+
+
+def test_the_launch_tutorials_two_turtlesims_are_two_windows(tmp_path: Path) -> None:
+    specs, findings, acts = _specs(tmp_path, MIMIC_TUTORIAL)
+    assert [(w.node, w.params) for w in acts.turtlesim_windows] == [("/turtlesim2/sim", {"background_g": 20})]
+    mimic_rules = _remaps(specs[0].args)
+    # the first window is bridged to turtlesim's own names; the second keeps the names it was launched with
+    assert mimic_rules["/input/pose"] == "/turtle1/pose"
+    assert mimic_rules["/output/cmd_vel"] == "/turtlesim2/turtle1/cmd_vel"
+    assert findings[-1] == ("case.launch.py starts a second turtlesim window, /turtlesim2/sim: its turtles are "
+                            "recorded under its names (/turtlesim2/turtle1/pose), and the task is graded on the first "
+                            "window's turtle.")
+
+
+def test_the_window_in_the_root_namespace_is_the_first(tmp_path: Path) -> None:
+    _, findings, acts = _specs(tmp_path, """
+        Node(package='turtlesim', namespace='other', executable='turtlesim_node', name='sim'),
+        Node(package='turtlesim', executable='turtlesim_node'),
+        Node(package='lab2_turtlesim', executable='pubvel'),""")
+    assert [w.node for w in acts.turtlesim_windows] == ["/other/sim"]
+    assert len(findings) == 1  # no bridge: the first window has turtlesim's own names
+
+
+@pytest.mark.parametrize("nodes, said", [
+    ("""
+        Node(package='turtlesim', executable='turtlesim_node'),
+        Node(package='turtlesim', executable='turtlesim_node', name='sim2'),""", "share its topics and services"),
+    ("""
+        Node(package='turtlesim', namespace='a', executable='turtlesim_node', name='sim'),
+        Node(package='turtlesim', namespace='a', executable='turtlesim_node', name='sim'),""", "share its topics"),
+    ("""
+        Node(package='turtlesim', executable='turtlesim_node'),
+        Node(package='turtlesim', namespace='b', executable='turtlesim_node', name='sim',
+             remappings=[('turtle1/cmd_vel', '/x')]),""", "remap the nodes that talk to it instead"),
+])
+def test_windows_rosgrade_cannot_tell_apart_are_refused_with_what_to_change(tmp_path: Path, nodes: str,
+                                                                            said: str) -> None:
+    with pytest.raises(LaunchError, match=said):
+        _specs(tmp_path, nodes)
 
 
 def test_a_turtlesim_node_rosgrade_does_not_ship_is_still_said_not_to_run(tmp_path: Path) -> None:
@@ -124,8 +158,8 @@ def test_rosgrade_launch_nodes_says_which_turtlesim_nodes_run(capsys: pytest.Cap
     assert main(["launch", str(tutorial), "--nodes"]) == 0
     assert capsys.readouterr().out == (
         "/turtlesim1/sim  (turtlesim turtlesim_node) (simulated by rosgrade)\n"
-        "/turtlesim2/sim  (turtlesim turtlesim_node) (not run: rosgrade simulates one turtlesim; a task refuses a "
-        "second)\n"
+        "/turtlesim2/sim  (turtlesim turtlesim_node) (simulated by rosgrade: another turtlesim window, under its "
+        "own names)\n"
         "/mimic  (turtlesim mimic) (run by rosgrade as turtlesim's own node)\n")
 
 

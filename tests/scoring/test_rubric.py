@@ -28,6 +28,7 @@ CONTRACT = {
     "turtle_goal": ["reaches_goal", "stops", "no_wall_hit", "short_way"],
     "turtle_clean": ["coverage", "no_wall_hit", "finishes"],
     "turtle_launch": ["drives", "direction", "turns"],
+    "turtle_mimic": ["two_windows", "first_turtle_drives", "mimics"],
     "add_two_ints": ["serves", "sums"],
     "param_circle": ["radius_follows", "shutdown_stop"],
     "number_game": ["serves", "hints", "counts_guesses", "cheat", "correct_guess"],
