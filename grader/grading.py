@@ -206,7 +206,7 @@ def _launch_nodes(folder: Path, rubric: Rubric) -> tuple[Started, LaunchActs]:
         if world.robot != rubric.robot:
             findings.append(f"{world.where}: {world.package}/{world.file} starts a {world.robot}, but this task is "
                             f"graded on a {rubric.robot}.")
-    # The grader's own nodes (turtle_teleop_key) are neither checked nor shown as the student's files.
+    # The grader's own nodes (turtle_teleop_key, mimic) are neither checked nor shown as the student's files.
     scripts = list(dict.fromkeys(spec.script for spec in nodes if not spec.provided))
     for script in scripts:
         findings += check_script(script)
