@@ -12,8 +12,12 @@ from collections.abc import Collection
 
 from sim.samples import Sample, ServiceResult, WorldService, WorldTopic
 from sim.scenario import Scenario
-from sim.turtle_canvas import Canvas
 from sim.turtlesim import Parameters, Request, TurtlesimError, TurtlesimWorld
+
+
+def _first(name: str) -> property:
+    """What the first window says of ``name``: the run's scenario, clock, node and picture are the first window's."""
+    return property(lambda self: getattr(self.first, name), doc=f"the first window's {name}")
 
 
 class TurtlesimWindows:
@@ -29,49 +33,17 @@ class TurtlesimWindows:
 
     # -- what the first window answers for the run -------------------------------------------------------------------
 
-    @property
-    def scenario(self) -> Scenario:
-        return self.first.scenario
-
-    @property
-    def time_ns(self) -> int:
-        return self.first.time_ns
-
-    @property
-    def start_ns(self) -> int:
-        return self.first.start_ns
-
-    @property
-    def end_ns(self) -> int:
-        return self.first.end_ns
-
-    @property
-    def mode_name(self) -> str:
-        return self.first.mode_name
-
-    @property
-    def odometry_topic(self) -> str:
-        return self.first.odometry_topic
-
-    @property
-    def command_qos(self) -> tuple[str, str]:
-        return self.first.command_qos
-
-    @property
-    def known_as(self) -> str:
-        return self.first.known_as
-
-    @property
-    def node_name(self) -> str:
-        return self.first.node_name
-
-    @property
-    def sim_clock(self) -> bool:
-        return self.first.sim_clock
-
-    @property
-    def canvas(self) -> Canvas:
-        return self.first.canvas
+    scenario = _first("scenario")
+    time_ns = _first("time_ns")
+    start_ns = _first("start_ns")
+    end_ns = _first("end_ns")
+    mode_name = _first("mode_name")
+    odometry_topic = _first("odometry_topic")
+    command_qos = _first("command_qos")
+    known_as = _first("known_as")
+    node_name = _first("node_name")
+    sim_clock = _first("sim_clock")
+    canvas = _first("canvas")
 
     def state(self) -> dict[str, float]:
         return self.first.state()
