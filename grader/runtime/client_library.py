@@ -26,6 +26,7 @@ import yaml
 from grader.nodelib import import_roots as client_roots
 from grader.runtime.scripts import read_script
 from grader.workspace import Package, Workspace, read_workspace
+from grader.workspace.python_source import parse
 
 ROS1, ROS2 = "ros1", "ros2"
 MAX_IMPORT_ROOTS = 16  # folders a node gets on its import path from the workspace; a course workspace needs 1-3
@@ -46,7 +47,7 @@ class EntryPoint:
 def _import_pairs(source: str) -> list[tuple[str, str]] | None:
     """(top-level module, next part or "") of every import, in source order; None when the script does not parse."""
     try:
-        tree = ast.parse(source)
+        tree = parse(source)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return None
     names: list[str] = []

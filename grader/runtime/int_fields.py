@@ -15,6 +15,7 @@ from pathlib import Path
 
 from grader.nodelib.ros2.rosgrade_rosidl._convert import as_double
 from grader.runtime.scripts import read_script
+from grader.workspace.python_source import parse
 
 VELOCITY_PARTS = frozenset({"linear", "angular"})
 AXES = frozenset({"x", "y", "z"})
@@ -75,7 +76,7 @@ def int_assignments(source: str) -> list[IntAssignment]:
     """Every assignment of a non-zero int to a velocity component, in line order (none for code that does not parse:
     Python's own error is reported elsewhere)."""
     try:
-        tree = ast.parse(source)
+        tree = parse(source)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return []
     constants = _constants(tree)

@@ -9,6 +9,8 @@ import os
 import stat
 from pathlib import Path
 
+from grader.workspace.python_source import compile_quietly
+
 SKIPPED_DIRS = {"build", "devel", "install", "log", "logs", "__pycache__", "node_modules", "__MACOSX"}
 # Far above any node a course asks for; compiling more would let a submission spend the grader's time and memory.
 MAX_SCRIPT_BYTES = 1024 * 1024
@@ -84,7 +86,7 @@ def check_script(path: Path, rosrun: bool = True) -> list[str]:
                      "(it often comes from copying code out of a PDF or a binary editor).")
         return notes
     try:
-        compile(source, str(path), "exec", dont_inherit=True)
+        compile_quietly(source, str(path))
     except SyntaxError as exc:
         hint = " This looks like Python 2 code; ROS Noetic runs Python 3." if _looks_like_python2(source) else ""
         notes.append(f"{path.name} line {exc.lineno}: SyntaxError: {exc.msg}.{hint}")

@@ -15,6 +15,7 @@ from pathlib import Path
 from xml.parsers import expat
 
 from grader.workspace.data_files import DataFiles, read_data_files
+from grader.workspace.python_source import parse
 
 MAX_BYTES = 256 * 1024  # a package.xml or setup.py is a few kB
 _NAME = re.compile(rb"<name>\s*([^<\s]+)\s*</name>")
@@ -154,7 +155,7 @@ def read_setup(path: Path) -> SetupPy:
     """setup.py's ``setup(...)`` (or catkin's ``generate_distutils_setup(...)``) keywords, read as a syntax tree."""
     raw = read_bounded(path)
     try:
-        tree = ast.parse(raw.decode("utf-8", "replace"))
+        tree = parse(raw.decode("utf-8", "replace"))
     except _SYNTAX_ERRORS as exc:
         line = getattr(exc, "lineno", None)
         raise ManifestError(f"setup.py{f' line {line}' if line else ''} does not parse ({type(exc).__name__}): "
