@@ -32,6 +32,10 @@ ENTRY_LAUNCHER = COMMON / "rosgrade_entry.py"
 # Nothing of the grader's environment leaks into the node except what a terminal on a ROS machine would give it;
 # ROS_* and PYTHONPATH are dropped so a real ROS install on this machine is never picked up.
 _KEPT_ENV = ("PATH", "LANG", "LC_ALL", "TZ", "TERM")
+# Python >= 3.12 prints a SyntaxWarning for an invalid escape ("\d", "\777") as it compiles a script; Noetic's Python
+# (3.8) says nothing (a hidden DeprecationWarning, as on 3.11), so a rospy node does not print it on any grader's
+# Python. An rclpy node keeps it: Jazzy's Python (3.12) prints it.
+_ROS1_WARNINGS = "ignore:invalid escape sequence:SyntaxWarning,ignore:invalid octal escape sequence:SyntaxWarning"
 # Seconds close() keeps looking for stragglers (a fork bomb refills while it is being killed).
 _REAP_S = 5.0
 
@@ -79,6 +83,8 @@ def node_environment(spec: NodeSpec, channel: str, home: Path | str) -> dict[str
         ROS_MASTER_URI="http://localhost:11311",
     )
     env.setdefault("LANG", "C.UTF-8")
+    if spec.flavour == "ros1":
+        env["PYTHONWARNINGS"] = _ROS1_WARNINGS
     if spec.ros_namespace:
         env["ROS_NAMESPACE"] = spec.ros_namespace
     return env

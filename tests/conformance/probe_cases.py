@@ -549,4 +549,13 @@ CASES += [
     )),
 ]
 
+# A node's own source compiled as Noetic's Python does, whichever Python the grader runs on.
+CASES += [
+    Case("p37_escape_warnings", "p37_escape_warnings.py", duration=2.0, stdout=(
+        "regex 1.25",
+        "path ['C:', 'data', 'scans']",
+        "octal ['0x1ff']",
+    ), stderr_empty=True),
+]
+
 CASES_BY_ID = {case.id: case for case in CASES}
