@@ -24,7 +24,8 @@ LIBRARY_FRAMES = "<library frames>"
 
 
 class Case(Protocol):
-    """What the harness reads of a suite's probe case (and ``real_may_hang``, a reason, where the suite has it)."""
+    """What the harness reads of a suite's probe case (and, where the suite has them, ``real_may_hang``, a reason,
+    and ``real_race``: (a line the real library logs when a race of its own threads hit the run, the reason))."""
 
     id: str
 
@@ -139,24 +140,31 @@ class OurRuns:
         return result
 
 
-def _hung(case: Case, result: Any) -> bool:
-    """A real run the harness had to kill in a case whose real side may hang: no reference either way."""
-    return bool(getattr(case, "real_may_hang", "")) and exit_code(result) is None
+def _unusable(case: Case, result: Any) -> str:
+    """Why a real run is no reference either way ('' when it is one): the harness had to kill it in a case whose real
+    side may hang, or a race between the real library's own threads hit it (the line it logs then says so)."""
+    if getattr(case, "real_may_hang", "") and exit_code(result) is None:
+        return f"every real run hung and was killed ({case.real_may_hang})"  # type: ignore[attr-defined]
+    line, why = getattr(case, "real_race", ("", ""))
+    if line and line in (getattr(result, "stderr", "") or ""):
+        return f"every real run was hit by a race of the real library's threads ({why})"
+    return ""
 
 
 def same_as_real(case: Case, real: RealRuns, ours: Any, differences: Callable[[Case, Any, Any], list[str]],
                  library: str) -> None:
     """Pass when ours has no difference from one of the real runs; fail showing the last real run's differences."""
-    compared, problems, last = 0, [], None
+    compared, problems, last, unusable = 0, [], None, ""
     for last in real.runs(case):
-        if _hung(case, last):
+        unusable = _unusable(case, last)
+        if unusable:
             continue
         compared += 1
         problems = differences(case, last, ours)
         if not problems:
             return
     if not compared:
-        pytest.skip(f"{case.id}: every real run hung and was killed ({case.real_may_hang})")  # type: ignore[attr-defined]
+        pytest.skip(f"{case.id}: {unusable}")
     pytest.fail(f"{case.id}: {len(problems)} difference(s) from real {library} (in each of {real.attempts} real runs; "
                 "the last shown):\n" + "\n".join(problems) + "\n\n" + describe("real", last) + describe("ours", ours))
 
@@ -164,14 +172,15 @@ def same_as_real(case: Case, real: RealRuns, ours: Any, differences: Callable[[C
 def behaves_as_measured(case: Case, side: str, results: Iterator[Any] | list[Any],
                         check: Callable[[Case, Any], list[str]]) -> None:
     """Pass when one of ``side``'s runs shows the case's measured behaviour (``check`` lists what it lacks)."""
-    checked, problems, last = 0, [], None
+    checked, problems, last, unusable = 0, [], None, ""
     for last in results:
-        if side == "real" and _hung(case, last):
+        unusable = _unusable(case, last) if side == "real" else ""
+        if unusable:
             continue
         checked += 1
         problems = check(case, last)
         if not problems:
             return
     if not checked:
-        pytest.skip(f"{case.id}: every real run hung and was killed ({case.real_may_hang})")  # type: ignore[attr-defined]
+        pytest.skip(f"{case.id}: {unusable}")
     pytest.fail(f"{case.id} ({side}):\n" + "\n".join(problems) + "\n\n" + describe(side, last))

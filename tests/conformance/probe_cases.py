@@ -32,6 +32,10 @@ class Case:
     # something the real side cannot pin down (the phase of the 30 Hz odometry against the probe's origin).
     tolerance_s: float = 0.01
     notes: tuple[str, ...] = field(default=())
+    # (a line the real library logs when a race between its own threads hit the run, why): such a real run is no
+    # reference, as the real library's own behaviour then depends on the machine's load; rosgrade models the run
+    # the race did not hit.
+    real_race: tuple[str, str] = ("", "")
 
     @property
     def path(self) -> Path:
@@ -502,7 +506,12 @@ CASES += [
 # about 1 run in 5); the harness's retries take the runs without it.
 _P35_DONE = "goal {} finished True state {} text {!r} result {}"
 CASES += [
-    Case("p35_actionlib", "p35_actionlib.py", duration=12.0, tolerance_s=0.3, stdout=(
+    Case("p35_actionlib", "p35_actionlib.py", duration=12.0, tolerance_s=0.3, real_race=(
+        "Got a transition callback on a goal handle that we're not tracking",
+        "SimpleActionClient.send_goal stores the new goal handle only after ActionClient.send_goal returns; on a "
+        "loaded machine the server's first status reaches the client's thread before that, and the goal's active and "
+        "later callbacks are dropped with this error (seen in each of 3 real runs during a CI run beside other work)"),
+        stdout=(
         "wait_for_server before the server False t=0.300",
         "state with no goal 9 LOST",
         "wait_for_server once started True",
