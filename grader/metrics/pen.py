@@ -23,7 +23,7 @@ so a pixel whose centre lies within about 1e-5 px of the edge of a spawned turtl
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 import numpy as np
@@ -31,7 +31,7 @@ import numpy as np
 from grader.metrics.run import TURTLE_POSE_TOPIC, ParamChange, RunData, ServiceCall, Trajectory
 from grader.nodelib.common import rosgrade_params
 from sim.turtle_canvas import Canvas
-from sim.turtlesim import BACKGROUND_PARAMS, CANVAS_M, CENTRE, DEFAULT_TURTLE, Turtle, background
+from sim.turtlesim import CANVAS_M, CENTRE, DEFAULT_TURTLE, NODE_NAME, Turtle, background
 
 # (topic, x, y, theta) of one recorded pose
 Pose = tuple[str, float, float, float]
@@ -68,8 +68,10 @@ class Drawing:
     turtles: tuple[Turtle, ...]
 
 
-def redraw(run: RunData, source: Literal["ground_truth", "odometry"] = "ground_truth") -> Drawing:
-    """Replay the run's poses and served calls; turtle1's poses are ``run.trajectory(source)``."""
+def redraw(run: RunData, source: Literal["ground_truth", "odometry"] = "ground_truth",
+           node: str = NODE_NAME) -> Drawing:
+    """Replay the run's poses and served calls; turtle1's poses are ``run.trajectory(source)``, the background the
+    parameters of turtlesim's ``node`` (a further window's: see ``window_run``)."""
     paths = dict(run.poses)
     first = run.trajectory(source)
     if len(first):
@@ -83,14 +85,31 @@ def redraw(run: RunData, source: Literal["ground_truth", "odometry"] = "ground_t
         if isinstance(event, ParamChange):
             params.change(event)
             if event is run.param_changes[0]:  # the tree the world started with: its canvas was filled from it
-                canvas.clear(background(params))
-            elif run.client_library == "rclpy" and event.name in BACKGROUND_PARAMS:  # Jazzy repaints at once
-                canvas.repaint(background(params))
+                canvas.clear(background(params, node))
+            elif run.client_library == "rclpy" and event.name.startswith(f"{node}/background_"):  # Jazzy repaints
+                canvas.repaint(background(params, node))
         elif isinstance(event, ServiceCall):
-            _serve(event, live, canvas, params)
+            _serve(event, live, canvas, params, node)
         else:
             _move(event, live, canvas)
     return Drawing(canvas, tuple(live[name] for name in sorted(live)))
+
+
+def window_run(run: RunData, node: str) -> RunData:
+    """A further turtlesim window (``node``: ``/turtlesim2/sim``) as a run of its own under turtlesim's own names: its
+    turtles' poses and the calls it served with the namespace taken off, for ``redraw(..., node=node)``."""
+    namespace = node.rpartition("/")[0]
+    poses = {topic[len(namespace):]: path for topic, path in run.window_poses.items()
+             if topic.startswith(namespace + "/")}
+    calls = tuple(replace(call, service=call.service[len(namespace):]) for call in run.service_calls
+                  if call.service.startswith(namespace + "/"))
+    first = poses.get(TURTLE_POSE_TOPIC, Trajectory.of([], [], [], []))
+    # calls_before counts every served call; the window's own are fewer, so a change keeps its place among them
+    params = tuple(replace(change, calls_before=sum(1 for c in run.service_calls[:change.calls_before]
+                                                     if c.service.startswith(namespace + "/")))
+                   for change in run.param_changes)
+    return replace(run, odometry=first, ground_truth=None, poses=poses, service_calls=calls, param_changes=params,
+                   windows=(), window_poses={})
 
 
 Event = Pose | ServiceCall | ParamChange
@@ -131,17 +150,17 @@ def _move(pose: Pose, live: dict[str, Turtle], canvas: Canvas) -> None:
     turtle.draw(canvas, old)
 
 
-def _serve(call: ServiceCall, live: dict[str, Turtle], canvas: Canvas, params: _Params) -> None:
+def _serve(call: ServiceCall, live: dict[str, Turtle], canvas: Canvas, params: _Params, node: str) -> None:
     """What a call the world answered did to the turtles and the canvas (a failed call did nothing)."""
     if call.response is None:
         return
     request = call.request
     if call.service == "/clear":
-        canvas.clear(background(params))
+        canvas.clear(background(params, node))
     elif call.service == "/reset":
         live.clear()
         live[DEFAULT_TURTLE] = Turtle.spawned(DEFAULT_TURTLE, CENTRE, CENTRE, 0.0)
-        canvas.clear(background(params))
+        canvas.clear(background(params, node))
     elif call.service == "/spawn":
         name = str(call.response["name"])
         if name:  # a ROS 2 /spawn that turtlesim refused still answers, with an empty name

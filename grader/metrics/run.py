@@ -184,7 +184,8 @@ class RunData:
     start_time: float = 0.0  # sim time (s) when the node was started
     shutdown_at: float | None = None  # scenario's Ctrl+C time, seconds after start
     poses: dict[str, Trajectory] = field(default_factory=dict)  # turtlesim: each turtle's pose topic → its poses
-    # turtlesim's further windows (the launch tutorials' turtlesim2): their turtles' pose topics → poses
+    # turtlesim's further windows (the launch tutorials' turtlesim2): their nodes; their turtles' pose topics → poses
+    windows: tuple[str, ...] = ()
     window_poses: dict[str, Trajectory] = field(default_factory=dict)
     service_calls: tuple[ServiceCall, ...] = ()  # in the order they were served
     param_changes: tuple[ParamChange, ...] = ()  # in the order they were made (none: a recording without them)
@@ -244,7 +245,8 @@ class RunData:
         """Adapt a ``grader.recording.Recording`` (documented API in DEVELOPERS.md) into arrays."""
         truth = recording.ground_truth()
         calls, params = _calls_and_params(recording)
-        poses, window_poses = _by_window(turtle_poses(recording), _other_windows(recording))
+        windows = other_windows(recording)
+        poses, window_poses = by_window(turtle_poses(recording), windows)
         return cls(
             odometry=_odometry(recording),
             ground_truth=None if truth is None else _trajectory(truth, "ground_truth"),
@@ -254,6 +256,7 @@ class RunData:
             start_time=start_time,
             shutdown_at=shutdown_at,
             poses=poses,
+            windows=windows,
             window_poses=window_poses,
             service_calls=calls,
             param_changes=params,
@@ -272,17 +275,19 @@ def _world_info(recording: Any) -> dict:
     return info if isinstance(info, dict) else {}
 
 
-def _other_windows(recording: Any) -> tuple[str, ...]:
-    """The namespaces of the run's further turtlesim windows, as its recorded scenario names them."""
+def other_windows(recording: Any) -> tuple[str, ...]:
+    """The nodes of the run's further turtlesim windows (``/turtlesim2/sim``), as its recorded scenario names them."""
     scenario = _decode(_world_info(recording).get("scenario"))
     windows = scenario.get("turtlesim_windows", []) if isinstance(scenario, dict) else []
-    return tuple(str(w.get("node", "")).rpartition("/")[0] for w in windows if isinstance(w, dict))
+    return tuple(str(w.get("node", "")) for w in windows if isinstance(w, dict))
 
 
-def _by_window(poses: dict[str, Trajectory], others: tuple[str, ...]) -> tuple[dict[str, Trajectory],
-                                                                              dict[str, Trajectory]]:
-    """The first window's turtles' poses, and the further windows' (their topics are under the windows' namespaces)."""
-    theirs = {topic for topic in poses if any(topic.startswith(namespace + "/") for namespace in others)}
+def by_window(poses: dict[str, Trajectory], others: tuple[str, ...]) -> tuple[dict[str, Trajectory],
+                                                                            dict[str, Trajectory]]:
+    """The first window's turtles' poses, and the further windows' (``others``: their nodes, in whose namespaces
+    their topics are)."""
+    namespaces = [node.rpartition("/")[0] for node in others]
+    theirs = {topic for topic in poses if any(topic.startswith(namespace + "/") for namespace in namespaces)}
     return ({t: p for t, p in poses.items() if t not in theirs}, {t: p for t, p in poses.items() if t in theirs})
 
 

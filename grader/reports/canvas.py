@@ -5,9 +5,10 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
-from grader.metrics.pen import redraw
+from grader.metrics.pen import redraw, window_run
 from grader.metrics.run import RunData
 from sim.turtle_canvas import CANVAS_PX, METER_PX
+from sim.turtlesim import NODE_NAME
 
 TURTLE_PX = 14.0  # the marker's length: about the turtle image's size in the window
 TURTLE_COLOUR = "#3c8c3c"
@@ -23,9 +24,10 @@ def turtle_outline(x_px: float, y_px: float, theta: float) -> np.ndarray:
     return np.array([nose, tail + side * TURTLE_PX * 0.4, tail + ahead * TURTLE_PX * 0.1, tail - side * TURTLE_PX * 0.4])
 
 
-def canvas_figure(run: RunData) -> Figure:
-    """The 500 × 500 px picture the window would show at the end of ``run``, with each turtle alive then."""
-    drawing = redraw(run)
+def canvas_figure(run: RunData, window: str = NODE_NAME) -> Figure:
+    """The 500 × 500 px picture the window would show at the end of ``run``, with each turtle alive then; ``window``:
+    a further turtlesim window's node (``/turtlesim2/sim``), else the first window's."""
+    drawing = redraw(run) if window == NODE_NAME else redraw(window_run(run, window), node=window)
     figure = Figure(figsize=(5.0, 5.2))
     axes = figure.add_subplot()
     axes.imshow(drawing.canvas.pixels, interpolation="nearest",
@@ -37,6 +39,7 @@ def canvas_figure(run: RunData) -> Figure:
     axes.set_ylim(CANVAS_PX - 0.5, -0.5)
     axes.set_xticks([])
     axes.set_yticks([])
-    axes.set_title("the turtlesim window at the end of the run", fontsize=9)
+    title = "the turtlesim window" if window == NODE_NAME else f"the turtlesim window of {window}"
+    axes.set_title(f"{title} at the end of the run", fontsize=9)
     figure.tight_layout()
     return figure

@@ -13,8 +13,8 @@ from matplotlib.figure import Figure
 from grader.metrics.collisions import Params as TouchParams
 from grader.metrics.collisions import touches
 from grader.metrics.pose_print import pose_lines
-from grader.metrics.run import (Contact, OutputLine, RunData, Trajectory, contacts, param_changes, service_calls,
-                                turtle_poses)
+from grader.metrics.run import (Contact, OutputLine, RunData, Trajectory, by_window, contacts, other_windows,
+                                param_changes, service_calls, turtle_poses)
 from grader.report import SubmissionReport
 from grader.reports.canvas import canvas_figure
 from grader.reports.figures import Figures, level_changes, png, thin
@@ -125,11 +125,18 @@ def task_plots(task_id: str, scenario: str, recording: Any, dpi: int = DPI,
     path = truth if has_truth else odom
     stop_s = shutdown_s(metadata)
     if turtlesim and path is not None and len(path.t):
-        figure = canvas_figure(run or RunData(odometry=Trajectory.of(path.t, path.x, path.y, path.yaw),
-                                              poses=turtle_poses(recording), service_calls=service_calls(recording),
-                                              param_changes=param_changes(recording)))
+        if run is None:
+            windows = other_windows(recording)
+            poses, window_poses = by_window(turtle_poses(recording), windows)
+            run = RunData(odometry=Trajectory.of(path.t, path.x, path.y, path.yaw), poses=poses,
+                          service_calls=service_calls(recording), param_changes=param_changes(recording),
+                          windows=windows, window_poses=window_poses)
+        figure = canvas_figure(run)
         plots.append(Plot(task_id, scenario, "canvas", f"{task_id} ({scenario}): the turtlesim window at the end",
                           png(figure, dpi)))
+        for index, window in enumerate(run.windows, start=2):  # the launch tutorials' turtlesim2
+            plots.append(Plot(task_id, scenario, f"canvas{index}", f"{task_id} ({scenario}): the turtlesim window of "
+                              f"{window} at the end", png(canvas_figure(run, window), dpi)))
     if path is not None and len(path.t):
         touched = touches(run.contacts if run is not None else contacts(recording), TouchParams().gap_s)
         figure = _path_figure(path, kind, has_truth=path is truth, stop_s=stop_s, figures=figures, touched=touched)

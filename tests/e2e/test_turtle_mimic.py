@@ -11,6 +11,8 @@ from pathlib import Path
 import pytest
 
 from grader.grading import grade_task
+from grader.metrics.pen import redraw, window_run
+from grader.metrics.run import RunData
 from grader.recording import Recording
 from grader.rubric import load_rubrics
 
@@ -20,7 +22,9 @@ ROOT = Path(__file__).resolve().parents[2]
 REFERENCE = ROOT / "reference_solutions_turtlesim_ros2" / "lab2_turtlesim"
 XML = """<launch>
   <node pkg="turtlesim" exec="turtlesim_node" name="sim" namespace="turtlesim1"/>
-  <node pkg="turtlesim" exec="turtlesim_node" name="sim" namespace="turtlesim2"/>
+  <node pkg="turtlesim" exec="turtlesim_node" name="sim" namespace="turtlesim2">
+    <param name="background_r" value="200"/>
+  </node>
   <node pkg="turtlesim" exec="mimic" name="mimic">
     <remap from="/input/pose" to="/turtlesim1/turtle1/pose"/>
     <remap from="/output/cmd_vel" to="/turtlesim2/turtle1/cmd_vel"/>
@@ -51,12 +55,19 @@ def test_the_ros2_reference_scores_full_marks_with_two_windows(reference) -> Non
     assert by_topic["/turtle1/cmd_vel"] == "/rosgrade"  # the grader's ros2 topic pub, bridged from turtlesim1's name
 
 
-def test_the_same_launch_file_in_xml_scores_full_marks(tmp_path: Path) -> None:
+def test_the_same_launch_file_in_xml_scores_full_marks_and_each_window_is_drawn(tmp_path: Path) -> None:
     package = tmp_path / "src" / "lab2_turtlesim"
     shutil.copytree(REFERENCE, package, ignore=shutil.ignore_patterns("__pycache__"))
     (package / "launch" / "turtlesim_mimic_launch.py").unlink()
     (package / "launch" / "turtlesim_mimic_launch.xml").write_text(XML)
-    _full_marks(grade_task(tmp_path / "src", load_rubrics()["turtle_mimic"], tmp_path / "out"))
+    report = grade_task(tmp_path / "src", load_rubrics()["turtle_mimic"], tmp_path / "out")
+    _full_marks(report)
+    run = RunData.from_recording(Recording.open(report.recordings[0]))
+    assert run.windows == ("/turtlesim2/sim",) and set(run.window_poses) == {"/turtlesim2/turtle1/pose"}
+    first, second = redraw(run), redraw(window_run(run, "/turtlesim2/sim"), node="/turtlesim2/sim")
+    # each window's own background (the launch file gives turtlesim2's background_r), and its own pen line
+    assert tuple(first.canvas.pixels[2, 2]) == (69, 86, 255) and tuple(second.canvas.pixels[2, 2]) == (200, 86, 255)
+    assert second.canvas.inked.sum() > 0.8 * first.canvas.inked.sum() > 0
 
 
 def test_a_two_window_recording_repeats_bit_for_bit(reference, tmp_path: Path) -> None:
