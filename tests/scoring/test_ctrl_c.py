@@ -14,7 +14,7 @@ from scoring_synth import Segment, commands, path, run, square_segments
 
 from grader.metrics import OutputLine, RunData, RunInfo
 from grader.metrics.action_record import ActionGoal
-from grader.metrics.run import ServiceCall
+from grader.metrics.run import ServiceCall, Trajectory
 from grader.metrics.motion import wrap
 from grader.metrics.lidar_distance import beams_ahead, nearest
 from grader.metrics.stop_distance import scan_ahead
@@ -221,7 +221,7 @@ def test_every_criterion_of_the_driving_tasks_but_the_shutdown_ones_is_compared(
     assert {c for _, c in shutdown} == {"shutdown_stop"}
     assert set(RUBRICS) - set(DRIVING_TASKS) == {  # compared on their own below
         "add_two_ints", "param_circle", "number_game", "number_game_client", "fibonacci", "fibonacci_client",
-        "explore_forward", "turtle_spawn_draw", "add_two_ints_client", "turtle_rotate_absolute"}
+        "explore_forward", "turtle_spawn_draw", "add_two_ints_client", "turtle_rotate_absolute", "turtle_mimic"}
 
 
 def _served(ctrl_c: bool) -> dict[str, RunData]:
@@ -487,3 +487,24 @@ def test_ctrl_c_after_the_response_changes_no_add_client_credit(criterion: str) 
                                .criteria if c.id == criterion) for ctrl_c in (False, True))
     assert plain.score == plain.max_score, plain.feedback
     assert interrupted.score == plain.score, interrupted.feedback
+
+
+def _mimicked(ctrl_c_at: float | None) -> dict[str, RunData]:
+    """turtle_mimic's windows: the first turtle drives a circle for 8 s and the second follows 32 ms behind, until a
+    Ctrl+C stops mimic (the second turtle then stands while the first drives on)."""
+    t = [k * 0.016 for k in range(501)]
+    leader = Trajectory.of(t, [CENTRE + math.sin(s) for s in t], [CENTRE - 1 + math.cos(s) for s in t], t)
+    lag = [max(0.0, s - 0.032) if ctrl_c_at is None or s < ctrl_c_at else ctrl_c_at for s in t]
+    follower = Trajectory.of(t, [CENTRE + math.sin(s) for s in lag], [CENTRE - 1 + math.cos(s) for s in lag], lag)
+    info = RunInfo() if ctrl_c_at is None else RunInfo(shutdown_requested_s=ctrl_c_at, ended_s=ctrl_c_at)
+    data = RunData(odometry=leader, ground_truth=leader, run=info, poses={"/turtle1/pose": leader},
+                   windows=("/turtlesim2/sim",), window_poses={"/turtlesim2/turtle1/pose": follower})
+    return {s.name: data for s in RUBRICS["turtle_mimic"].scenarios}
+
+
+@pytest.mark.parametrize("criterion", [c.id for c in RUBRICS["turtle_mimic"].criteria])
+def test_ctrl_c_after_mimicking_changes_no_mimic_credit(criterion: str) -> None:
+    plain = {c.id: c for c in score_task(RUBRICS["turtle_mimic"], _mimicked(None)).criteria}[criterion]
+    cut = {c.id: c for c in score_task(RUBRICS["turtle_mimic"], _mimicked(7.0)).criteria}[criterion]
+    assert plain.score == plain.max_score, plain.feedback
+    assert cut.score == plain.score, cut.feedback
