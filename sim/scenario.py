@@ -199,7 +199,7 @@ class TurtlesimWindow(_Model):
     """A further turtlesim window in the run: a launch file's second turtlesim_node (the launch tutorials' two
     turtlesims and mimic). Its topics and services live in its node's namespace, its parameters under its node."""
 
-    node: str = Field(pattern=r"^(/[A-Za-z][\w]*)+$", description="the node's full name, e.g. /turtlesim2/sim")
+    node: str = Field(pattern=r"^(/[A-Za-z_]\w*)+$", description="the node's full name, e.g. /turtlesim2/sim")
     params: dict[str, JsonValue] = Field(default_factory=dict,
                                          description="the parameters the node starts with, by name")
 

@@ -20,6 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from pydantic import ValidationError
+
 from grader.launch import names
 from grader.launch.ros2_acts import KINDS, LaunchActs, renamed, world_params
 from grader.launch.model import LaunchError
@@ -114,7 +116,11 @@ def _other_windows(others: list[dict[str, Any]], first: dict[str, Any],
         except ParamFileError as exc:
             notes.append(f"{file_name} gives turtlesim_node {node} parameters rcl refuses: {exc.problem}.")
             params = {}
-        windows.append(TurtlesimWindow(node=node, params=params))
+        try:
+            windows.append(TurtlesimWindow(node=node, params=params))
+        except ValidationError:
+            raise LaunchError(f"{file_name} starts turtlesim_node as {node}, which is not a valid ROS node name (each "
+                              "part a letter or _ then letters, digits or _)") from None
         notes.append(f"{file_name} starts a second turtlesim window, {node}: its turtles are recorded under its names "
                      f"({namespace.rstrip('/')}/turtle1/pose), and the task is graded on the first window's turtle.")
     return tuple(windows), tuple(notes)

@@ -118,6 +118,8 @@ def test_the_roslaunch_tutorials_two_turtlesims_are_two_windows(tmp_path):
     ('<node pkg="turtlesim" type="turtlesim_node" name="a"/>\n<group ns="t2"><node pkg="turtlesim" '
      'type="turtlesim_node" name="b"><remap from="turtle1/pose" to="/p"/></node></group>',
      "case.launch line 3: the grader runs a second turtlesim window under the names of its namespace only"),
+    ('<node pkg="turtlesim" type="turtlesim_node" name="a"/>\n<group ns="2nd"><node pkg="turtlesim" '
+     'type="turtlesim_node" name="b"/></group>', "case.launch line 3: turtlesim_node /2nd/b is not a valid ROS node name"),
     ('<node pkg="turtlesim" type="turtlesim_node" name="a"><remap from="turtle1/pose" to="turtle1/cmd_vel"/></node>',
      "case.launch line 2: the remaps of turtlesim_node give two of its topics or services the same name"),
     ('<node pkg="turtlesim" type="turtlesim_node" name="a"/>',

@@ -136,6 +136,10 @@ def test_the_window_in_the_root_namespace_is_the_first(tmp_path: Path) -> None:
         Node(package='turtlesim', executable='turtlesim_node'),
         Node(package='turtlesim', namespace='b', executable='turtlesim_node', name='sim',
              remappings=[('turtle1/cmd_vel', '/x')]),""", "remap the nodes that talk to it instead"),
+    ("""
+        Node(package='turtlesim', executable='turtlesim_node'),
+        Node(package='turtlesim', namespace='2nd', executable='turtlesim_node', name='sim'),""",
+     "Invalid namespace: namespace must not have a token that starts with a number"),
 ])
 def test_windows_rosgrade_cannot_tell_apart_are_refused_with_what_to_change(tmp_path: Path, nodes: str,
                                                                             said: str) -> None:
