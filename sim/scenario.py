@@ -301,6 +301,9 @@ class Scenario(_Model):
                 raise ValueError("turtlesim has no base modes, worlds, obstacles or imperfections; remove them from "
                                  "the scenario")
         else:
+            if self.turtlesim_windows:
+                raise ValueError("turtlesim_windows: only a turtlesim run has windows; remove them or set robot = "
+                                 f"{TURTLESIM!r}")
             try:
                 profile = load_robot(self.robot)
             except ProfileError as exc:

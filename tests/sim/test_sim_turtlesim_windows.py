@@ -71,3 +71,8 @@ def test_two_windows_with_one_node_name_are_refused() -> None:
     scenario = Scenario(robot="turtlesim", turtlesim_windows=twice)
     with pytest.raises(TurtlesimError, match="one node name"):
         open_world(scenario)
+
+
+def test_a_robot_run_has_no_turtlesim_windows() -> None:
+    with pytest.raises(ValueError, match="only a turtlesim run has windows"):
+        Scenario(robot="turtlebot3_burger", turtlesim_windows=[TurtlesimWindow(node="/turtlesim2/sim")])
