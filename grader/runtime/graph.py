@@ -102,12 +102,24 @@ def for_session(session, plan) -> GraphView:
     participant = FixedNode(PARTICIPANT, "grader", pub=tuple((p.topic, p.type) for p in plan.publications))
 
     def fixed() -> Iterable[FixedNode]:
-        world = session.world
-        yield FixedNode(world.node_name, "world", pub=tuple(session.world_topics),
-                        sub=tuple((topic, type_name) for topic in world.command_topics
-                                  for type_name in sorted(session.command_types)),
-                        srv=tuple((s.name, s.type) for s in world.services))
+        yield from _world_nodes(session)
         if acts:
             yield participant
 
     return GraphView(session.discovery_ns, lambda: [Peer(n.link.state, n.alive) for n in session.nodes], fixed)
+
+
+def _world_nodes(session) -> Iterable[FixedNode]:
+    """The world's node, or each of its nodes when it stands for several (turtlesim's further windows: a topic, a
+    command topic or a service under a window's namespace is that window node's)."""
+    world = session.world
+    others = sorted({p.node for p in session.publications.values() if p.node}, key=len, reverse=True)
+
+    def owner(name: str) -> str:
+        return next((node for node in others if name.startswith(node.rpartition("/")[0] + "/")), world.node_name)
+
+    subs = [(topic, type_name) for topic in world.command_topics for type_name in sorted(session.command_types)]
+    for node in (world.node_name, *others):
+        yield FixedNode(node, "world", pub=tuple(t for t in session.world_topics if owner(t[0]) == node),
+                        sub=tuple(t for t in subs if owner(t[0]) == node),
+                        srv=tuple((s.name, s.type) for s in world.services if owner(s.name) == node))
