@@ -150,7 +150,8 @@ def _move(pose: Pose, live: dict[str, Turtle], canvas: Canvas) -> None:
     turtle.draw(canvas, old)
 
 
-def _serve(call: ServiceCall, live: dict[str, Turtle], canvas: Canvas, params: _Params, node: str) -> None:
+def _serve(call: ServiceCall, live: dict[str, Turtle], canvas: Canvas, params: _Params,
+           node: str = NODE_NAME) -> None:
     """What a call the world answered did to the turtles and the canvas (a failed call did nothing)."""
     if call.response is None:
         return
