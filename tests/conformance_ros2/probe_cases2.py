@@ -425,8 +425,8 @@ TURTLE_CASES = [
              "to -1.0, replaced: ABORTED delta 0.3 heading 0.7",
              "then to 0.0: SUCCEEDED delta 0.7 heading 0.0",
              "cancel return_code 0 goals canceling 1",
-             "to 2.0, cancelled: CANCELED delta -0.3 heading 0.3",
-             "to -2.0, cmd_vel sent: ABORTED delta 0.3 heading 0.0",
+             "to 2.0, cancelled: CANCELED turned 0.25-0.5 rad True delta is minus the heading True",
+             "to -2.0, cmd_vel sent: ABORTED delta 0.3 turned back by it True",
              "end",
          ), volatile=(r"^\[(INFO|WARN)\] \[<wall>\] \[turtlesim_rotate_absolute\]: ", r"^logged ")),
     # The parameters `ros2 param set/get/describe` reach (reasons are rclcpp's words, which an rclpy model cannot

@@ -51,6 +51,16 @@ class Probe(Node):
     def report(self, label, result_future):
         result = self.until(result_future)
         print(label, STATUS[result.status], "delta %.1f" % result.result.delta, "heading %.1f" % self.pose.theta)
+        return result
+
+    def report_cancelled(self, label, result_future):
+        """A cancel takes effect after a round trip of wall time on the real side (0.3-0.4 rad turned here): the
+        status, a turn within bounds, and that the result's delta is what is left to turn from where it stopped."""
+        result = self.until(result_future)
+        delta = result.result.delta
+        print(label, STATUS[result.status], "turned 0.25-0.5 rad", -0.5 <= delta <= -0.25,
+              "delta is minus the heading", abs(delta + self.pose.theta) < 0.05)
+        return self.pose.theta
 
 
 rclpy.init()
@@ -76,11 +86,13 @@ handle, result = node.send(2.0)
 node.wait(0.3)
 cancel = node.until(handle.cancel_goal_async())
 print("cancel return_code", cancel.return_code, "goals canceling", len(cancel.goals_canceling))
-node.report("to 2.0, cancelled:", result)
+stopped_at = node.report_cancelled("to 2.0, cancelled:", result)
 _, result = node.send(-2.0)
 node.wait(0.3)
 node.pub.publish(Twist())
-node.report("to -2.0, cmd_vel sent:", result)
+aborted = node.until(result)
+print("to -2.0, cmd_vel sent:", STATUS[aborted.status], "delta %.1f" % aborted.result.delta,
+      "turned back by it", abs(stopped_at - node.pose.theta - aborted.result.delta) < 0.05)
 node.wait(0.3)
 for line in node.logs:
     print("logged", line)
