@@ -383,8 +383,8 @@ TURTLE_CASES = [
     Case("p21_turtle_motion", "p21_turtle_motion.py", duration=8.0, world="turtlesim", stdout=(
         "start x 5.544445 y 5.544445 theta 0.000000",
         "speeds reported [0.0, 1.0]",
-        "stopped after the last command (s) 1.0",
-        "distance 1.9 y moved False theta 0.000000",
+        "stopped 0.9-1.4 s after the last command True",
+        "distance 1.4-2.5 m True y moved False theta 0.000000",
         "at the wall x 11.088889 y 5.544445",
         "wall warnings more than 3 True",
         "first warning Oh no! I hit the wall! (Clamping from [x=<x>, y=5.544445])",

@@ -2,8 +2,8 @@
 """Probe 21: turtlesim's update rule, its 1 s command timeout, holonomic off, and the wall's clamping warning.
 
 Drives turtle1 at 1 m/s for 1 s (10 Twists, linear.y 0.5 too), waits, then at 5 m/s into the right wall for 1.5 s.
-Prints facts that do not depend on DDS timing: the speeds the pose reported, how long after the last command the
-turtle stopped (0.1 s steps), the distance (0.1 m), whether y moved, where it was clamped, the warning's text.
+Prints facts that do not depend on DDS timing: the speeds the pose reported, that the turtle stopped about 1 s after the
+last command and drove about 2 m (within wall time's jitter), whether y moved, where it was clamped, the warning's text.
 """
 import re
 
@@ -60,9 +60,12 @@ last = node.drive(1.0, 0.5, 10)
 node.wait(1.5)
 moving = [t for t, p in node.poses if p.linear_velocity > 0]
 print("speeds reported", sorted({round(p.linear_velocity, 3) for _, p in node.poses}))
-print("stopped after the last command (s)", round(moving[-1] - last, 1))
+# Both on wall time at 1x on the real side (ten publications 0.1 s apart, then turtlesim's 1 s timeout): measured
+# 1.0-1.3 s and 1.5-2.3 m over real runs, where rosgrade's sim time gives 1.0 s and 1.9 m.
+print("stopped 0.9-1.4 s after the last command", 0.9 <= moving[-1] - last <= 1.4)
 end = node.poses[-1][1]
-print("distance %.1f" % (end.x - start.x), "y moved", abs(end.y - start.y) > 1e-6, "theta %.6f" % end.theta)
+print("distance 1.4-2.5 m", 1.4 <= end.x - start.x <= 2.5, "y moved", abs(end.y - start.y) > 1e-6,
+      "theta %.6f" % end.theta)
 node.logs.clear()
 node.drive(5.0, 0.0, 15)
 node.wait(1.2)
