@@ -53,13 +53,14 @@ class Probe(Node):
         print(label, STATUS[result.status], "delta %.1f" % result.result.delta, "heading %.1f" % self.pose.theta)
         return result
 
-    def report_cancelled(self, label, result_future):
-        """A cancel takes effect after a round trip of wall time on the real side (0.3-0.4 rad turned here): the
-        status, a turn within bounds, and that the result's delta is what is left to turn from where it stopped."""
+    def report_turn(self, label, result_future, started_at=None):
+        """A goal whose turn depends on when another goal, a cancel or a cmd_vel message came, a matter of wall time on
+        the real side (0.3-0.5 rad measured): the status, a turn within bounds and, where the turtle is at rest after
+        it (``started_at`` given), that the result's delta is the turn made from where the goal started."""
         result = self.until(result_future)
         delta = result.result.delta
-        print(label, STATUS[result.status], "turned 0.25-0.5 rad", -0.5 <= delta <= -0.25,
-              "delta is minus the heading", abs(delta + self.pose.theta) < 0.05)
+        turn = () if started_at is None else ("delta is the turn", abs(delta - (started_at - self.pose.theta)) < 0.05)
+        print(label, STATUS[result.status], "delta 0.1-0.9 rad", 0.1 <= abs(delta) <= 0.9, *turn)
         return self.pose.theta
 
 
@@ -80,19 +81,18 @@ print("feedback first %.1f" % node.feedback[0], "last below 0.02", abs(node.feed
 _, first = node.send(-1.0)
 node.wait(0.3)
 _, second = node.send(0.0)
-node.report("to -1.0, replaced:", first)
-node.report("then to 0.0:", second)
+node.report_turn("to -1.0, replaced:", first)
+node.report_turn("then to 0.0:", second)
+print("at 0.0 %.1f" % node.pose.theta)
 handle, result = node.send(2.0)
 node.wait(0.3)
 cancel = node.until(handle.cancel_goal_async())
 print("cancel return_code", cancel.return_code, "goals canceling", len(cancel.goals_canceling))
-stopped_at = node.report_cancelled("to 2.0, cancelled:", result)
+stopped_at = node.report_turn("to 2.0, cancelled:", result, 0.0)
 _, result = node.send(-2.0)
 node.wait(0.3)
 node.pub.publish(Twist())
-aborted = node.until(result)
-print("to -2.0, cmd_vel sent:", STATUS[aborted.status], "delta %.1f" % aborted.result.delta,
-      "turned back by it", abs(stopped_at - node.pose.theta - aborted.result.delta) < 0.05)
+node.report_turn("to -2.0, cmd_vel sent:", result, stopped_at)
 node.wait(0.3)
 for line in node.logs:
     print("logged", line)
