@@ -15,10 +15,11 @@ window under the names it was launched with (``/turtlesim2/turtle1/cmd_vel``), s
 """
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+from pydantic import ValidationError
 
 from grader.launch import names
 from grader.launch.model import Launch, LaunchError, LaunchNode
@@ -32,7 +33,6 @@ ROBOT = "turtlesim"  # the rubric robot that is turtlesim's world
 # turtle_frame.cpp's services and turtle1's topics and services, relative to turtlesim_node's namespace.
 WORLD_NAMES = ("clear", "reset", "spawn", "kill", "turtle1/cmd_vel", "turtle1/pose", "turtle1/color_sensor",
                "turtle1/set_pen", "turtle1/teleport_absolute", "turtle1/teleport_relative")
-_VALID_NODE = re.compile(r"(/[A-Za-z_]\w*)+")  # what a further window's node name must be (sim.scenario)
 UNSERVED = "/no_turtlesim_here"  # where a world name goes when the launched turtlesim does not use it
 WORLD_NAME = "/turtlesim"  # the world's node name: its private parameters (background_r...) live under it
 
@@ -100,9 +100,11 @@ def world_node(launch: Launch) -> TurtlesimNode | None:
         if other.remaps:
             raise LaunchError(f"{other.where}: the grader runs a second turtlesim window under the names of its "
                               "namespace only: remove its <remap> and remap the nodes that talk to it instead")
-        if not _VALID_NODE.fullmatch(other.full_name):
+        try:
+            TurtlesimWindow(node=other.full_name)  # the scenario's own check of a window's node name
+        except ValidationError:
             raise LaunchError(f"{other.where}: turtlesim_node {other.full_name} is not a valid ROS node name (each "
-                              "part a letter or _ then letters, digits or _)")
+                              "part a letter or _ then letters, digits or _)") from None
         seen.add(other.full_name)
     remaps = {resolve(node, source): resolve(node, target) for source, target in node.remaps}
     launched = {}
